@@ -1,0 +1,586 @@
+#include "vtkFeaturePointExtraction.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointCloudNeighborhoods.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVoxelDensityContrastFilter.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+vtkStandardNewMacro(vtkFeaturePointExtraction);
+
+namespace
+{
+// m(i) never goes below this fraction of the mean spacing (stacks of coincident points).
+constexpr double MinimumMeanDistance = 1e-3;
+
+// One non-candidate in this many is scored to show the AUTOMATIC threshold the background.
+constexpr vtkIdType BackgroundStride = 8;
+
+// Number of filled entries at the head of a neighbour row (rows are padded with -1).
+inline int RowLength(const int32_t* row, int k)
+{
+  int n = 0;
+  while (n < k && row[n] >= 0)
+  {
+    ++n;
+  }
+  return n;
+}
+
+// Eq. 7: mean distance from point `id` to the first k entries of its row.
+inline double MeanDistance(vtkPoints* points, vtkIdType id, const int32_t* row, int k, double floor)
+{
+  double x[3], y[3];
+  points->GetPoint(id, x);
+  double sum = 0.0;
+  int n = 0;
+  for (; n < k && row[n] >= 0; ++n)
+  {
+    points->GetPoint(row[n], y);
+    sum += std::sqrt((y[0] - x[0]) * (y[0] - x[0]) + (y[1] - x[1]) * (y[1] - x[1]) +
+      (y[2] - x[2]) * (y[2] - x[2]));
+  }
+  return n > 0 ? std::max(sum / n, floor) : floor;
+}
+
+struct ScoreParameters
+{
+  int K;
+  int NormalNeighbors;
+  int SSINeighbors;
+  int DensityNeighbors;
+  int CenterNeighbors;
+  bool DensityWeightedCenter;
+  double Alpha;
+  double Spacing;
+  double Radius;
+  double Center[3];
+};
+
+// Normal, SSI, PDI and F of each candidate, from its neighbour row and the m(j) of its neighbours.
+struct ScoreWorker
+{
+  vtkPoints* Points;
+  const std::vector<vtkIdType>& Ids;
+  const int32_t* Table;
+  const double* MeanDistances; // m(j) for every point that some candidate uses
+  const ScoreParameters& P;
+  float* Normals;
+  float* SSI;
+  float* PDI;
+  float* F;
+  vtkSMPThreadLocal<std::vector<double>> Scratch; // relative coordinates of the neighbours
+
+  void Initialize() { this->Scratch.Local().resize(3 * static_cast<size_t>(this->P.K)); }
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    std::vector<double>& q = this->Scratch.Local();
+    double x[3], y[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      const int32_t* row = this->Table + r * this->P.K;
+      const int n = RowLength(row, this->P.K);
+      this->Points->GetPoint(id, x);
+      // Work relative to P_i: large offsets cost no precision.
+      for (int j = 0; j < n; ++j)
+      {
+        this->Points->GetPoint(row[j], y);
+        q[3 * j] = y[0] - x[0];
+        q[3 * j + 1] = y[1] - x[1];
+        q[3 * j + 2] = y[2] - x[2];
+      }
+      auto dist2 = [&q](int j) {
+        return q[3 * j] * q[3 * j] + q[3 * j + 1] * q[3 * j + 1] + q[3 * j + 2] * q[3 * j + 2];
+      };
+
+      // Eq. 3: PCA normal of the NormalNeighbors nearest points.
+      const int kn = std::min(n, this->P.NormalNeighbors);
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int j = 0; j < kn; ++j)
+      {
+        mean += Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+      }
+      mean /= std::max(kn, 1);
+      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+      for (int j = 0; j < kn; ++j)
+      {
+        const Eigen::Vector3d v = Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]) - mean;
+        cov += v * v.transpose();
+      }
+      Eigen::Vector3d normal(0.0, 0.0, 0.0);
+      if (kn >= 3 && cov.allFinite())
+      {
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+        solver.computeDirect(cov / std::max(kn, 1));
+        normal = solver.eigenvectors().col(0);
+        if (!normal.allFinite() || normal.squaredNorm() == 0.0)
+        {
+          normal.setZero();
+        }
+        else
+        {
+          normal.normalize();
+          const Eigen::Vector3d outward(
+            x[0] - this->P.Center[0], x[1] - this->P.Center[1], x[2] - this->P.Center[2]);
+          if (normal.dot(outward) < 0.0)
+          {
+            normal = -normal;
+          }
+        }
+      }
+
+      // Eqs. 7, 9: m(i) and D(i).
+      const double mi = this->MeanDistances[id];
+      const double density = 1.0 / mi;
+
+      // Eqs. 4-5: weighted centroid, weights g_j m(j), shifted by the nearest distance (see header).
+      const int ks = std::min(n, this->P.SSINeighbors);
+      const double inv_r2 = 1.0 / (this->P.Radius * this->P.Radius);
+      const double d0 = n > 0 ? dist2(0) : 0.0;
+      Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+      double weightSum = 0.0;
+      for (int j = 0; j < ks; ++j)
+      {
+        const double w = std::exp(-(dist2(j) - d0) * inv_r2) * this->MeanDistances[row[j]];
+        weighted += w * Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+        weightSum += w;
+      }
+      if (weightSum > 0.0)
+      {
+        weighted /= weightSum;
+      }
+
+      // Eq. 6 (or Eq. 2): the centre the SSI measures from, relative to P_i.
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      if (this->P.DensityWeightedCenter)
+      {
+        const int kc = std::min(n, this->P.CenterNeighbors);
+        double sum = mi; // the point itself, at relative position 0
+        for (int j = 0; j < kc; ++j)
+        {
+          const double w = this->MeanDistances[row[j]];
+          centre += w * Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+          sum += w;
+        }
+        centre /= sum;
+      }
+
+      // Eq. 8 and Eq. 1 on dimensionless terms.
+      double ssi = std::abs((centre - weighted).dot(normal));
+      if (!std::isfinite(ssi))
+      {
+        ssi = 0.0;
+      }
+      const double f = this->P.Alpha * ssi / this->P.Spacing +
+        (1.0 - this->P.Alpha) * this->P.Spacing * density;
+
+      for (int c = 0; c < 3; ++c)
+      {
+        this->Normals[3 * id + c] = static_cast<float>(normal[c]);
+      }
+      this->SSI[id] = static_cast<float>(ssi);
+      this->PDI[id] = static_cast<float>(density);
+      this->F[id] = static_cast<float>(f);
+    }
+  }
+
+  void Reduce() {}
+};
+
+template <typename ArrayT>
+vtkSmartPointer<ArrayT> NewZeroArray(const char* name, int components, vtkIdType n)
+{
+  auto a = vtkSmartPointer<ArrayT>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(n);
+  a->Fill(0);
+  return a;
+}
+
+double Median(std::vector<double>& v, size_t begin, size_t end)
+{
+  const size_t n = end - begin;
+  auto mid = v.begin() + begin + n / 2;
+  std::nth_element(v.begin() + begin, mid, v.begin() + end);
+  double m = *mid;
+  if (n % 2 == 0)
+  {
+    m = 0.5 * (m + *std::max_element(v.begin() + begin, mid));
+  }
+  return m;
+}
+} // namespace
+
+vtkFeaturePointExtraction::vtkFeaturePointExtraction() = default;
+vtkFeaturePointExtraction::~vtkFeaturePointExtraction() = default;
+
+double vtkFeaturePointExtraction::AutomaticThreshold(std::vector<double>& scores, double sigmas)
+{
+  if (scores.empty())
+  {
+    return 0.0;
+  }
+  std::vector<double> kept(scores);
+  std::vector<double> deviation;
+  double threshold = VTK_DOUBLE_MAX;
+  for (int round = 0; round < 50; ++round)
+  {
+    const double mu = Median(kept, 0, kept.size());
+    deviation.resize(kept.size());
+    for (size_t i = 0; i < kept.size(); ++i)
+    {
+      deviation[i] = std::abs(kept[i] - mu);
+    }
+    const double mad = Median(deviation, 0, deviation.size());
+    const double s = std::max(1.4826 * mad, 0.01 * std::abs(mu));
+    const double next = mu + sigmas * s;
+    if (next == threshold)
+    {
+      break;
+    }
+    threshold = next;
+    size_t m = 0;
+    for (double value : scores)
+    {
+      if (value <= threshold)
+      {
+        kept[m++] = value;
+      }
+    }
+    kept.resize(m);
+    if (m == 0)
+    {
+      break;
+    }
+  }
+  return threshold;
+}
+
+int vtkFeaturePointExtraction::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkFeaturePointExtraction::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  this->MeanSpacing = 0.0;
+  this->ThresholdUsed = 0.0;
+  this->NumberOfCandidates = 0;
+  this->NumberOfFeaturePoints = 0;
+
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkPoints* points = input->GetPoints();
+  auto normals = NewZeroArray<vtkFloatArray>("Normals", 3, n);
+  auto ssi = NewZeroArray<vtkFloatArray>("SSI", 1, n);
+  auto pdi = NewZeroArray<vtkFloatArray>("PDI", 1, n);
+  auto score = NewZeroArray<vtkFloatArray>("F", 1, n);
+  auto candidate = NewZeroArray<vtkUnsignedCharArray>("Candidate", 1, n);
+  auto mask = NewZeroArray<vtkUnsignedCharArray>("FeatureMask", 1, n);
+
+  // Assembles the output from whatever the arrays hold when it is called.
+  auto finish = [&]() {
+    vtkNew<vtkPolyData> full;
+    if (points)
+    {
+      full->SetPoints(points);
+    }
+    else
+    {
+      full->SetPoints(vtkNew<vtkPoints>());
+    }
+    full->GetPointData()->PassData(input->GetPointData());
+    for (vtkDataArray* a :
+      { normals.GetPointer(), ssi.GetPointer(), pdi.GetPointer(), score.GetPointer() })
+    {
+      full->GetPointData()->AddArray(a);
+    }
+    full->GetPointData()->AddArray(candidate);
+    full->GetPointData()->AddArray(mask);
+    full->GetPointData()->SetActiveScalars("F");
+
+    vtkNew<vtkDoubleArray> spacing;
+    spacing->SetName("MeanSpacing");
+    spacing->InsertNextValue(this->MeanSpacing);
+    vtkNew<vtkDoubleArray> threshold;
+    threshold->SetName("FeatureThreshold");
+    threshold->InsertNextValue(this->ThresholdUsed);
+
+    if (!this->OutputFeaturesOnly)
+    {
+      output->ShallowCopy(full);
+      output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(n));
+    }
+    else
+    {
+      const vtkIdType nf = this->NumberOfFeaturePoints;
+      vtkNew<vtkPoints> kept;
+      kept->SetDataType(points ? points->GetDataType() : VTK_FLOAT);
+      kept->SetNumberOfPoints(nf);
+      vtkNew<vtkIdTypeArray> original;
+      original->SetName("vtkOriginalPointIds");
+      original->SetNumberOfValues(nf);
+      vtkPointData* outPD = output->GetPointData();
+      outPD->CopyAllocate(full->GetPointData(), nf);
+      vtkIdType j = 0;
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        if (mask->GetValue(i))
+        {
+          kept->SetPoint(j, points->GetPoint(i));
+          outPD->CopyData(full->GetPointData(), i, j);
+          original->SetValue(j, i);
+          ++j;
+        }
+      }
+      outPD->SetNumberOfTuples(nf);
+      outPD->AddArray(original);
+      outPD->SetActiveScalars("F");
+      output->SetPoints(kept);
+      output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(nf));
+    }
+    output->GetFieldData()->AddArray(spacing);
+    output->GetFieldData()->AddArray(threshold);
+    return 1;
+  };
+
+  if (n == 0)
+  {
+    vtkWarningMacro("The input has no points: the output is empty.");
+    return finish();
+  }
+
+  vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+  if (!neighborhoods->Build(points))
+  {
+    vtkErrorMacro(<< "Cannot process the input: " << neighborhoods->GetErrorText()
+                  << ". All scores are 0 and no point is a feature point.");
+    return finish();
+  }
+  const vtkIdType nValid = neighborhoods->GetNumberOfValidPoints();
+  if (neighborhoods->GetFirstInvalidPoint() >= 0)
+  {
+    vtkWarningMacro(<< n - nValid << " of " << n
+                    << " points have NaN or infinite coordinates (the first is point "
+                    << neighborhoods->GetFirstInvalidPoint()
+                    << "); they are skipped: scores 0, never feature points.");
+  }
+  const int k = std::max(std::max(this->NormalNeighbors, this->SSINeighbors),
+    std::max(this->DensityNeighbors,
+      this->SSICenter == DENSITY_WEIGHTED_MEAN ? this->CenterNeighbors : 0));
+  if (nValid < k + 1)
+  {
+    vtkWarningMacro(<< "The input has " << nValid << " valid point(s), fewer than the " << k + 1
+                    << " needed for neighbourhoods of " << k
+                    << " points: all scores are 0 and no point is a feature point.");
+    return finish();
+  }
+
+  const double d = neighborhoods->ComputeMeanSpacing();
+  this->UpdateProgress(0.1);
+  if (this->GetAbortExecute())
+  {
+    return finish();
+  }
+  if (!(d > 0.0))
+  {
+    vtkWarningMacro("All points coincide: the point spacing is 0, all scores are 0 and no point "
+                    "is a feature point.");
+    return finish();
+  }
+  this->MeanSpacing = d;
+  if (neighborhoods->GetNumberOfDuplicatePoints() > 0)
+  {
+    vtkWarningMacro(<< neighborhoods->GetNumberOfDuplicatePoints()
+                    << " point(s) coincide with another point; the mean spacing ignores them and "
+                       "their density index is large.");
+  }
+
+  // Section 3.2: candidates of the voxel pre-filter, or every valid point.
+  unsigned char* isCandidate = candidate->GetPointer(0);
+  const unsigned char* valid = neighborhoods->GetValidMask();
+  bool scoreAll = !this->UseVoxelFilter;
+  if (this->UseVoxelFilter)
+  {
+    vtkNew<vtkVoxelDensityContrastFilter> voxels;
+    voxels->SetVoxelSizeFactor(this->VoxelSizeFactor);
+    voxels->SetDensityContrast(this->DensityContrast);
+    voxels->SetContrastRule(this->VoxelContrastRule);
+    voxels->MarkCandidates(
+      points, valid, d, neighborhoods->GetNearestDistances().data(), isCandidate);
+    // No density contrast anywhere: the cloud is uniformly sampled and the step would drop every
+    // feature, so every point is scored instead.
+    scoreAll = voxels->GetNumberOfContrastVoxels() == 0;
+  }
+  if (scoreAll)
+  {
+    std::copy(valid, valid + n, isCandidate);
+  }
+  // The scored points: the candidates, and for the AUTOMATIC threshold every BackgroundStride-th
+  // other point, so that the threshold sees the cloud's background rather than the candidates'
+  // feature-rich population alone. The sample is scored but never marked, and its scores are
+  // cleared from the output.
+  std::vector<vtkIdType> ids;
+  std::vector<vtkIdType> background;
+  vtkIdType others = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (isCandidate[i])
+    {
+      ids.push_back(i);
+    }
+    else if (valid[i] && this->ThresholdMode == AUTOMATIC && (others++ % BackgroundStride) == 0)
+    {
+      ids.push_back(i);
+      background.push_back(i);
+    }
+  }
+  this->NumberOfCandidates = static_cast<vtkIdType>(ids.size() - background.size());
+
+  // One k-nearest query per candidate, for every quantity.
+  std::vector<int32_t> table;
+  if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.1, 0.7))
+  {
+    return finish();
+  }
+
+  // m(j) for the candidates and for every point a candidate weighs in Eqs. 4 and 6.
+  const double floor = MinimumMeanDistance * d;
+  std::vector<double> meanDistance(n, 0.0);
+  const int kd = this->DensityNeighbors;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      meanDistance[ids[r]] = MeanDistance(points, ids[r], table.data() + r * k, kd, floor);
+    }
+  });
+  const int used = std::max(this->SSINeighbors,
+    this->SSICenter == DENSITY_WEIGHTED_MEAN ? this->CenterNeighbors : 0);
+  std::vector<unsigned char> needed(n, 0);
+  for (size_t r = 0; r < ids.size(); ++r)
+  {
+    const int32_t* row = table.data() + r * k;
+    for (int j = 0; j < used && row[j] >= 0; ++j)
+    {
+      needed[row[j]] = meanDistance[row[j]] > 0.0 ? 0 : 1;
+    }
+  }
+  std::vector<vtkIdType> neighbors;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (needed[i])
+    {
+      neighbors.push_back(i);
+    }
+  }
+  if (!neighbors.empty())
+  {
+    std::vector<int32_t> neighborTable;
+    if (!neighborhoods->FindNearestNeighbors(kd, neighbors, neighborTable, nullptr, this, 0.7, 0.8))
+    {
+      return finish();
+    }
+    vtkSMPTools::For(0, static_cast<vtkIdType>(neighbors.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType r = begin; r < end; ++r)
+      {
+        meanDistance[neighbors[r]] =
+          MeanDistance(points, neighbors[r], neighborTable.data() + r * kd, kd, floor);
+      }
+    });
+  }
+
+  ScoreParameters parameters{ k, this->NormalNeighbors, this->SSINeighbors, this->DensityNeighbors,
+    this->CenterNeighbors, this->SSICenter == DENSITY_WEIGHTED_MEAN, this->Alpha, d,
+    this->GaussianRadiusFactor * d,
+    { neighborhoods->GetCenter()[0], neighborhoods->GetCenter()[1],
+      neighborhoods->GetCenter()[2] } };
+  ScoreWorker worker{ points, ids, table.data(), meanDistance.data(), parameters,
+    normals->GetPointer(0), ssi->GetPointer(0), pdi->GetPointer(0), score->GetPointer(0), {} };
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), worker);
+  this->UpdateProgress(0.9);
+
+  // Threshold and mask, decided on the stored (float) F so that the output agrees with itself.
+  const float* f = score->GetPointer(0);
+  if (this->ThresholdMode == AUTOMATIC)
+  {
+    // Each background point stands for BackgroundStride non-candidates.
+    std::vector<double> scores;
+    scores.reserve(ids.size() + background.size() * (BackgroundStride - 1));
+    for (vtkIdType id : ids)
+    {
+      scores.insert(scores.end(), isCandidate[id] ? 1 : BackgroundStride, f[id]);
+    }
+    this->ThresholdUsed = AutomaticThreshold(scores, this->ThresholdSigmas);
+  }
+  else
+  {
+    this->ThresholdUsed = this->Threshold;
+  }
+  unsigned char* isFeature = mask->GetPointer(0);
+  vtkIdType features = 0;
+  for (vtkIdType id : ids)
+  {
+    isFeature[id] = isCandidate[id] && f[id] > this->ThresholdUsed ? 1 : 0;
+    features += isFeature[id];
+  }
+  for (vtkIdType id : background)
+  {
+    std::fill_n(normals->GetPointer(3 * id), 3, 0.0f);
+    ssi->SetValue(id, 0.0f);
+    pdi->SetValue(id, 0.0f);
+    score->SetValue(id, 0.0f);
+  }
+  this->NumberOfFeaturePoints = features;
+  this->UpdateProgress(1.0);
+  return finish();
+}
+
+void vtkFeaturePointExtraction::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Alpha: " << this->Alpha << "\n";
+  os << indent << "NormalNeighbors: " << this->NormalNeighbors << "\n";
+  os << indent << "SSINeighbors: " << this->SSINeighbors << "\n";
+  os << indent << "DensityNeighbors: " << this->DensityNeighbors << "\n";
+  os << indent << "CenterNeighbors: " << this->CenterNeighbors << "\n";
+  os << indent << "SSICenter: " << this->SSICenter << "\n";
+  os << indent << "GaussianRadiusFactor: " << this->GaussianRadiusFactor << "\n";
+  os << indent << "UseVoxelFilter: " << this->UseVoxelFilter << "\n";
+  os << indent << "VoxelSizeFactor: " << this->VoxelSizeFactor << "\n";
+  os << indent << "DensityContrast: " << this->DensityContrast << "\n";
+  os << indent << "VoxelContrastRule: " << this->VoxelContrastRule << "\n";
+  os << indent << "ThresholdMode: " << this->ThresholdMode << "\n";
+  os << indent << "Threshold: " << this->Threshold << "\n";
+  os << indent << "ThresholdSigmas: " << this->ThresholdSigmas << "\n";
+  os << indent << "OutputFeaturesOnly: " << this->OutputFeaturesOnly << "\n";
+}

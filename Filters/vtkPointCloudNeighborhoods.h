@@ -1,0 +1,142 @@
+/**
+ * @class   vtkPointCloudNeighborhoods
+ * @brief   k-nearest-neighbour tables and the mean point spacing of a point cloud, shared by the
+ *          feature filters of this module.
+ *
+ * vtkPointCloudNeighborhoods validates a cloud's coordinates once, builds one
+ * vtkStaticPointLocator over its finite points, and answers the two questions every score of this
+ * module needs:
+ *
+ * - the mean spacing d: the mean, over all points, of the distance to the nearest *other* point
+ *   (points whose nearest other point coincides with them are left out of the mean and counted as
+ *   duplicates). It is the unit in which the filters express radii and voxel sizes, so that results
+ *   do not depend on the cloud's units.
+ * - for a set of points, the k nearest other points of each (the point itself excluded), nearest
+ *   first, as a table of 32-bit ids. One query per point serves every quantity that needs a
+ *   neighbourhood: a filter asks for the largest k it needs and uses prefixes of each row.
+ *
+ * Points with a NaN or infinite coordinate are left out of the locator: they are never anyone's
+ * neighbour and their own rows are filled with -1.
+ *
+ * @warning The queries run in parallel with vtkSMPTools; each row depends on its point only, so the
+ * tables are identical whatever the number of threads or the SMP backend. Clouds of more than
+ * 2^31 - 1 points are refused (the tables hold 32-bit ids).
+ *
+ * @sa vtkFeaturePointExtraction vtkStaticPointLocator
+ */
+#ifndef vtkPointCloudNeighborhoods_h
+#define vtkPointCloudNeighborhoods_h
+
+#include "FeaturePointsFiltersModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For ivars
+
+#include <cstdint> // For int32_t
+#include <string>  // For error text
+#include <vector>  // For tables
+
+class vtkAlgorithm;
+class vtkCellArray;
+class vtkPoints;
+class vtkPolyData;
+class vtkStaticPointLocator;
+
+class FEATUREPOINTSFILTERS_EXPORT vtkPointCloudNeighborhoods : public vtkObject
+{
+public:
+  static vtkPointCloudNeighborhoods* New();
+  vtkTypeMacro(vtkPointCloudNeighborhoods, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Validate the points and build the locator. Returns false, with a message in GetErrorText(),
+   * when nothing can be computed: no points, no finite point, more than 2^31 - 1 points.
+   * Non-finite coordinates and duplicates are not errors: they are counted (see the getters).
+   */
+  bool Build(vtkPoints* points);
+
+  /**
+   * Compute the mean spacing d (see the class comment) with one nearest-neighbour query per valid
+   * point. Returns 0 when no two valid points are apart (all coincide, or a single point).
+   * The result is cached until the next Build().
+   */
+  double ComputeMeanSpacing();
+
+  /**
+   * The k nearest other valid points of each point in `ids` (ascending point ids or any order),
+   * nearest first, written to `table` (ids.size() * k entries, row r for ids[r]). Rows of invalid
+   * points, and the tail of rows when fewer than k other valid points exist, hold -1.
+   * If `nearestDistances` is given it receives, per row, the distance to the nearest other point.
+   * Progress is reported through `progressAlg` between `progressStart` and `progressEnd`; returns
+   * false when that algorithm's AbortExecute flag is raised.
+   */
+  bool FindNearestNeighbors(int k, const std::vector<vtkIdType>& ids, std::vector<int32_t>& table,
+    std::vector<double>* nearestDistances = nullptr, vtkAlgorithm* progressAlg = nullptr,
+    double progressStart = 0.0, double progressEnd = 1.0);
+
+  ///@{
+  /**
+   * Statistics of the points given to Build(). A point is valid when its three coordinates are
+   * finite. GetFirstInvalidPoint() is -1 when all are valid.
+   */
+  vtkIdType GetNumberOfPoints() const { return this->NumberOfPoints; }
+  vtkIdType GetNumberOfValidPoints() const { return this->NumberOfValidPoints; }
+  vtkIdType GetFirstInvalidPoint() const { return this->FirstInvalidPoint; }
+  const unsigned char* GetValidMask() const { return this->Valid.data(); }
+  ///@}
+
+  /**
+   * Distance of each point to its nearest other point, filled by ComputeMeanSpacing() (0 for
+   * invalid points).
+   */
+  const std::vector<double>& GetNearestDistances() const { return this->NearestDistances; }
+
+  /**
+   * Number of valid points whose nearest other point lies at distance 0 (after ComputeMeanSpacing()).
+   */
+  vtkIdType GetNumberOfDuplicatePoints() const { return this->NumberOfDuplicatePoints; }
+
+  /**
+   * Centre of the bounding box of the valid points (Eq. 10 of the paper) and the box itself
+   * (xmin, xmax, ymin, ymax, zmin, zmax).
+   */
+  const double* GetCenter() const { return this->Center; }
+  const double* GetBounds() const { return this->Bounds; }
+
+  /** Why Build() failed. */
+  const std::string& GetErrorText() const { return this->ErrorText; }
+
+  /** The points given to Build(). */
+  vtkPoints* GetPoints() const;
+
+  /**
+   * One vertex cell per point (0 .. n-1), with 32-bit storage when n allows: how the filters of this
+   * module make a cloud render as is.
+   */
+  static vtkSmartPointer<vtkCellArray> MakeVertexCells(vtkIdType n);
+
+protected:
+  vtkPointCloudNeighborhoods();
+  ~vtkPointCloudNeighborhoods() override;
+
+  vtkSmartPointer<vtkPoints> Points;
+  vtkSmartPointer<vtkPolyData> LocatorData; // the valid points only
+  vtkSmartPointer<vtkStaticPointLocator> Locator;
+  std::vector<vtkIdType> LocatorToPoint; // empty when all points are valid
+  std::vector<unsigned char> Valid;
+  std::vector<double> NearestDistances;
+  vtkIdType NumberOfPoints = 0;
+  vtkIdType NumberOfValidPoints = 0;
+  vtkIdType FirstInvalidPoint = -1;
+  vtkIdType NumberOfDuplicatePoints = 0;
+  double MeanSpacing = -1.0;
+  double Center[3] = { 0, 0, 0 };
+  double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
+  std::string ErrorText;
+
+private:
+  vtkPointCloudNeighborhoods(const vtkPointCloudNeighborhoods&) = delete;
+  void operator=(const vtkPointCloudNeighborhoods&) = delete;
+};
+
+#endif

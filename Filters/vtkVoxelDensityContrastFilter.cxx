@@ -1,0 +1,395 @@
+#include "vtkVoxelDensityContrastFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointCloudNeighborhoods.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkVoxelDensityContrastFilter);
+
+namespace
+{
+constexpr int KeyBits = 21;
+constexpr int64_t KeyRange = int64_t(1) << KeyBits; // voxel indices per axis: [0, 2^21)
+
+inline uint64_t PackKey(int64_t i, int64_t j, int64_t k)
+{
+  return static_cast<uint64_t>(i) | (static_cast<uint64_t>(j) << KeyBits) |
+    (static_cast<uint64_t>(k) << (2 * KeyBits));
+}
+
+inline void UnpackKey(uint64_t key, int64_t ijk[3])
+{
+  const uint64_t mask = static_cast<uint64_t>(KeyRange - 1);
+  ijk[0] = static_cast<int64_t>(key & mask);
+  ijk[1] = static_cast<int64_t>((key >> KeyBits) & mask);
+  ijk[2] = static_cast<int64_t>((key >> (2 * KeyBits)) & mask);
+}
+
+// The occupied voxels, sorted by key, with their point counts.
+struct SparseGrid
+{
+  std::vector<uint64_t> Keys;
+  std::vector<int32_t> Counts;
+
+  // Index of the voxel with this key, -1 when empty.
+  vtkIdType Find(uint64_t key) const
+  {
+    auto it = std::lower_bound(this->Keys.begin(), this->Keys.end(), key);
+    return (it != this->Keys.end() && *it == key) ? static_cast<vtkIdType>(it - this->Keys.begin())
+                                                  : -1;
+  }
+
+  // Calls f(neighbourIndex) for each occupied voxel of the 26-neighbourhood of voxel v.
+  template <typename F>
+  void ForEachNeighbor(vtkIdType v, F&& f) const
+  {
+    int64_t ijk[3];
+    UnpackKey(this->Keys[v], ijk);
+    for (int dk = -1; dk <= 1; ++dk)
+    {
+      for (int dj = -1; dj <= 1; ++dj)
+      {
+        for (int di = -1; di <= 1; ++di)
+        {
+          if (di == 0 && dj == 0 && dk == 0)
+          {
+            continue;
+          }
+          const int64_t i = ijk[0] + di, j = ijk[1] + dj, k = ijk[2] + dk;
+          if (i < 0 || j < 0 || k < 0 || i >= KeyRange || j >= KeyRange || k >= KeyRange)
+          {
+            continue;
+          }
+          const vtkIdType n = this->Find(PackKey(i, j, k));
+          if (n >= 0)
+          {
+            f(n);
+          }
+        }
+      }
+    }
+  }
+};
+} // namespace
+
+vtkVoxelDensityContrastFilter::vtkVoxelDensityContrastFilter() = default;
+vtkVoxelDensityContrastFilter::~vtkVoxelDensityContrastFilter() = default;
+
+vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
+  const unsigned char* valid, double spacing, const double* nearest, unsigned char* candidate,
+  int32_t* voxelCount)
+{
+  this->VoxelSize = 0.0;
+  this->NumberOfOccupiedVoxels = 0;
+  this->NumberOfContrastVoxels = 0;
+  this->NumberOfCandidates = 0;
+  this->NumberOfClampedPoints = 0;
+  this->ReferenceLevel = 0.0;
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  std::fill(candidate, candidate + n, 0);
+  if (voxelCount)
+  {
+    std::fill(voxelCount, voxelCount + n, 0);
+  }
+  const double a = this->VoxelSizeFactor * spacing;
+  if (n == 0 || !(a > 0.0) || !std::isfinite(a))
+  {
+    return 0;
+  }
+  this->VoxelSize = a;
+  auto isValid = [valid](vtkIdType i) { return !valid || valid[i]; };
+
+  // Eq. 10-11: bounding box of the valid points.
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  double x[3];
+  vtkIdType nValid = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (isValid(i))
+    {
+      points->GetPoint(i, x);
+      ++nValid;
+      for (int c = 0; c < 3; ++c)
+      {
+        lo[c] = std::min(lo[c], x[c]);
+        hi[c] = std::max(hi[c], x[c]);
+      }
+    }
+  }
+  if (nValid == 0)
+  {
+    return 0;
+  }
+  bool fits = true;
+  for (int c = 0; c < 3; ++c)
+  {
+    fits = fits && (hi[c] - lo[c]) / a < static_cast<double>(KeyRange - 1);
+  }
+  double origin[3] = { lo[0], lo[1], lo[2] };
+  if (!fits)
+  {
+    // An outlier stretches the box beyond 2^21 voxels: centre the grid on the median point.
+    std::vector<double> coord;
+    coord.reserve(nValid);
+    for (int c = 0; c < 3; ++c)
+    {
+      coord.clear();
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        if (isValid(i))
+        {
+          coord.push_back(points->GetPoint(i)[c]);
+        }
+      }
+      auto mid = coord.begin() + coord.size() / 2;
+      std::nth_element(coord.begin(), mid, coord.end());
+      origin[c] = *mid - static_cast<double>(KeyRange / 2) * a;
+    }
+  }
+
+  // Voxel key of each valid point, sorted (key, point id).
+  std::vector<std::pair<uint64_t, int32_t>> keyed;
+  keyed.reserve(nValid);
+  vtkIdType clamped = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!isValid(i))
+    {
+      continue;
+    }
+    points->GetPoint(i, x);
+    int64_t ijk[3];
+    bool wasClamped = false;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double f = std::floor((x[c] - origin[c]) / a);
+      const double g = std::min(std::max(f, 0.0), static_cast<double>(KeyRange - 1));
+      wasClamped = wasClamped || g != f;
+      ijk[c] = static_cast<int64_t>(g);
+    }
+    clamped += wasClamped ? 1 : 0;
+    keyed.emplace_back(PackKey(ijk[0], ijk[1], ijk[2]), static_cast<int32_t>(i));
+  }
+  this->NumberOfClampedPoints = clamped;
+  vtkSMPTools::Sort(keyed.begin(), keyed.end());
+
+  // Occupied voxels and their counts.
+  SparseGrid grid;
+  std::vector<vtkIdType> start; // first entry of each voxel in `keyed`
+  for (size_t e = 0; e < keyed.size(); ++e)
+  {
+    if (e == 0 || keyed[e].first != keyed[e - 1].first)
+    {
+      grid.Keys.push_back(keyed[e].first);
+      grid.Counts.push_back(0);
+      start.push_back(static_cast<vtkIdType>(e));
+    }
+    ++grid.Counts.back();
+  }
+  start.push_back(static_cast<vtkIdType>(keyed.size()));
+  const vtkIdType nVoxels = static_cast<vtkIdType>(grid.Keys.size());
+  this->NumberOfOccupiedVoxels = nVoxels;
+
+  // The compared quantity per voxel: its count (paper) or its block's areal density 1/h^2.
+  const bool block = this->ContrastRule == BLOCK_SPACING && nearest;
+  std::vector<double> spacingSum(nVoxels, 0.0);
+  if (block)
+  {
+    for (vtkIdType v = 0; v < nVoxels; ++v)
+    {
+      for (vtkIdType e = start[v]; e < start[v + 1]; ++e)
+      {
+        spacingSum[v] += nearest[keyed[e].second];
+      }
+    }
+  }
+  std::vector<double> level(nVoxels);
+  std::vector<double> blockCount(nVoxels);
+  vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType v = begin; v < end; ++v)
+    {
+      if (!block)
+      {
+        level[v] = grid.Counts[v];
+        continue;
+      }
+      double sum = spacingSum[v];
+      double count = grid.Counts[v];
+      grid.ForEachNeighbor(v, [&](vtkIdType w) {
+        sum += spacingSum[w];
+        count += grid.Counts[w];
+      });
+      blockCount[v] = count;
+      const double h = sum / count;
+      level[v] = h > 0.0 ? 1.0 / (h * h) : VTK_DOUBLE_MAX;
+    }
+  });
+
+  // Contrast voxels. VOXEL_COUNTS (Filter_Algorithm): N(i) against each occupied neighbour.
+  // BLOCK_SPACING: the block density against the cloud's median block density.
+  const double eps = this->DensityContrast;
+  double reference = 0.0;
+  double minimumCount = 0.0;
+  if (block)
+  {
+    std::vector<double> sorted(level);
+    auto mid = sorted.begin() + sorted.size() / 2;
+    std::nth_element(sorted.begin(), mid, sorted.end());
+    reference = *mid;
+    // A block with few points (the rim of a surface, a stray cluster) measures no density.
+    sorted = blockCount;
+    mid = sorted.begin() + sorted.size() / 2;
+    std::nth_element(sorted.begin(), mid, sorted.end());
+    minimumCount = 0.5 * *mid;
+  }
+  this->ReferenceLevel = reference;
+  std::vector<unsigned char> contrast(nVoxels, 0);
+  vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType v = begin; v < end; ++v)
+    {
+      bool found = false;
+      if (block)
+      {
+        found = blockCount[v] >= minimumCount && level[v] > (1.0 + eps) * reference;
+      }
+      else
+      {
+        grid.ForEachNeighbor(v, [&](vtkIdType w) {
+          found = found || (level[v] - level[w]) / level[w] > eps;
+        });
+      }
+      contrast[v] = found ? 1 : 0;
+    }
+  });
+  // Too few contrast voxels to be more than the clumping of random sampling: no contrast at all.
+  const vtkIdType found = std::count(contrast.begin(), contrast.end(), 1);
+  if (static_cast<double>(found) < this->MinimumContrastFraction * static_cast<double>(nVoxels))
+  {
+    std::fill(contrast.begin(), contrast.end(), 0);
+  }
+  std::vector<unsigned char> keep(nVoxels, 0);
+  vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType v = begin; v < end; ++v)
+    {
+      bool found = contrast[v] != 0;
+      if (!found)
+      {
+        grid.ForEachNeighbor(v, [&](vtkIdType w) { found = found || contrast[w] != 0; });
+      }
+      keep[v] = found ? 1 : 0;
+    }
+  });
+
+  vtkIdType nContrast = 0, nCandidates = 0;
+  for (vtkIdType v = 0; v < nVoxels; ++v)
+  {
+    nContrast += contrast[v];
+    for (vtkIdType e = start[v]; e < start[v + 1]; ++e)
+    {
+      const int32_t id = keyed[e].second;
+      candidate[id] = keep[v];
+      nCandidates += keep[v];
+      if (voxelCount)
+      {
+        voxelCount[id] = grid.Counts[v];
+      }
+    }
+  }
+  this->NumberOfContrastVoxels = nContrast;
+  this->NumberOfCandidates = nCandidates;
+  if (clamped > 0)
+  {
+    vtkWarningMacro(<< clamped << " point(s) lie more than 2^20 voxels (" << (KeyRange / 2) * a
+                    << " units) from the cloud's median point and were clamped to the voxel grid's "
+                       "border: outliers stretch the bounding box.");
+  }
+  return nCandidates;
+}
+
+int vtkVoxelDensityContrastFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkVoxelDensityContrastFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkNew<vtkUnsignedCharArray> candidate;
+  candidate->SetName("Candidate");
+  candidate->SetNumberOfValues(n);
+  vtkNew<vtkIntArray> counts;
+  counts->SetName("VoxelPointCount");
+  counts->SetNumberOfValues(n);
+  std::fill_n(candidate->GetPointer(0), n, 0);
+  std::fill_n(counts->GetPointer(0), n, 0);
+
+  if (n > 0)
+  {
+    vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+    if (!neighborhoods->Build(input->GetPoints()))
+    {
+      vtkErrorMacro(<< "Cannot voxelize the input: " << neighborhoods->GetErrorText() << ".");
+    }
+    else
+    {
+      if (neighborhoods->GetFirstInvalidPoint() >= 0)
+      {
+        vtkWarningMacro(<< n - neighborhoods->GetNumberOfValidPoints()
+                        << " point(s) have NaN or infinite coordinates (the first is point "
+                        << neighborhoods->GetFirstInvalidPoint() << "); they are never candidates.");
+      }
+      const double mean = neighborhoods->ComputeMeanSpacing();
+      const double d = this->Spacing > 0.0 ? this->Spacing : mean;
+      if (d > 0.0)
+      {
+        this->MarkCandidates(input->GetPoints(), neighborhoods->GetValidMask(), d,
+          neighborhoods->GetNearestDistances().data(), candidate->GetPointer(0),
+          counts->GetPointer(0));
+      }
+      else
+      {
+        vtkWarningMacro("All points coincide: the point spacing is 0 and no voxel grid can be built.");
+      }
+    }
+  }
+
+  output->SetPoints(input->GetPoints());
+  output->GetPointData()->PassData(input->GetPointData());
+  output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(n));
+  output->GetPointData()->AddArray(candidate);
+  output->GetPointData()->AddArray(counts);
+  return 1;
+}
+
+void vtkVoxelDensityContrastFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "VoxelSizeFactor: " << this->VoxelSizeFactor << "\n";
+  os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "DensityContrast: " << this->DensityContrast << "\n";
+  os << indent << "ContrastRule: " << this->ContrastRule << "\n";
+  os << indent << "MinimumContrastFraction: " << this->MinimumContrastFraction << "\n";
+}
