@@ -209,24 +209,74 @@ double vtkPointCloudNeighborhoods::ComputeMeanSpacing()
   std::vector<double>& nearest = this->NearestDistances;
   this->FindNearestNeighbors(1, ids, table, &nearest);
 
-  // Summed in point order, so the value does not depend on the thread count.
-  double sum = 0.0;
-  vtkIdType count = 0;
-  this->NumberOfDuplicatePoints = 0;
+  // Points whose nearest point coincides with them: look further, for the nearest distinct point.
+  std::vector<vtkIdType> stacked;
   for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
   {
-    if (!this->Valid[i] || table[i] < 0)
+    if (this->Valid[i] && table[i] >= 0 && nearest[i] == 0.0)
     {
-      continue;
+      stacked.push_back(i);
     }
-    if (nearest[i] > 0.0)
+  }
+  this->NumberOfDuplicatePoints = static_cast<vtkIdType>(stacked.size());
+  for (int k = 8; !stacked.empty(); k *= 4)
+  {
+    const int kk = static_cast<int>(std::min<vtkIdType>(k, this->NumberOfValidPoints - 1));
+    std::vector<int32_t> rows;
+    this->FindNearestNeighbors(kk, stacked, rows);
+    std::vector<vtkIdType> still;
+    double x[3], y[3];
+    for (size_t r = 0; r < stacked.size(); ++r)
+    {
+      this->Points->GetPoint(stacked[r], x);
+      for (int j = 0; j < kk && rows[r * kk + j] >= 0; ++j)
+      {
+        this->Points->GetPoint(rows[r * kk + j], y);
+        const double d = std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
+        if (d > 0.0)
+        {
+          nearest[stacked[r]] = d;
+          break;
+        }
+      }
+      if (nearest[stacked[r]] == 0.0 && kk < this->NumberOfValidPoints - 1)
+      {
+        still.push_back(stacked[r]);
+      }
+    }
+    if (kk >= this->NumberOfValidPoints - 1)
+    {
+      break; // the rest coincide with every other point
+    }
+    stacked.swap(still);
+  }
+
+  // Mean of the nearest distances, ignoring isolated outliers (over 10 times the median), summed
+  // in point order so that the value does not depend on the thread count.
+  std::vector<double> positive;
+  positive.reserve(this->NumberOfPoints);
+  for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
+  {
+    if (this->Valid[i] && nearest[i] > 0.0)
+    {
+      positive.push_back(nearest[i]);
+    }
+  }
+  double limit = 0.0;
+  if (!positive.empty())
+  {
+    auto mid = positive.begin() + positive.size() / 2;
+    std::nth_element(positive.begin(), mid, positive.end());
+    limit = 10.0 * *mid;
+  }
+  double sum = 0.0;
+  vtkIdType count = 0;
+  for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
+  {
+    if (this->Valid[i] && nearest[i] > 0.0 && nearest[i] <= limit)
     {
       sum += nearest[i];
       ++count;
-    }
-    else
-    {
-      ++this->NumberOfDuplicatePoints;
     }
   }
   this->MeanSpacing = count > 0 ? sum / static_cast<double>(count) : 0.0;

@@ -7,10 +7,11 @@
  * vtkStaticPointLocator over its finite points, and answers the two questions every score of this
  * module needs:
  *
- * - the mean spacing d: the mean, over all points, of the distance to the nearest *other* point
- *   (points whose nearest other point coincides with them are left out of the mean and counted as
- *   duplicates). It is the unit in which the filters express radii and voxel sizes, so that results
- *   do not depend on the cloud's units.
+ * - the mean spacing d: the mean, over all points, of the distance to the nearest *distinct* point
+ *   (for a point stacked on duplicates, the nearest point at a nonzero distance), leaving out
+ *   isolated outliers whose distance exceeds 10 times the median (one far point would otherwise
+ *   set the unit of the whole cloud). It is the unit in which the filters express radii and voxel
+ *   sizes, so that results do not depend on the cloud's units.
  * - for a set of points, the k nearest other points of each (the point itself excluded), nearest
  *   first, as a table of 32-bit ids. One query per point serves every quantity that needs a
  *   neighbourhood: a filter asks for the largest k it needs and uses prefixes of each row.
@@ -86,13 +87,13 @@ public:
   ///@}
 
   /**
-   * Distance of each point to its nearest other point, filled by ComputeMeanSpacing() (0 for
-   * invalid points).
+   * Distance of each point to its nearest distinct point, filled by ComputeMeanSpacing() (0 for
+   * invalid points and for points that coincide with all others).
    */
   const std::vector<double>& GetNearestDistances() const { return this->NearestDistances; }
 
   /**
-   * Number of valid points whose nearest other point lies at distance 0 (after ComputeMeanSpacing()).
+   * Number of valid points that coincide with another point (after ComputeMeanSpacing()).
    */
   vtkIdType GetNumberOfDuplicatePoints() const { return this->NumberOfDuplicatePoints; }
 

@@ -1,0 +1,145 @@
+// Bad input gets a warning or an error naming the problem, and a well-defined output: no crash, no
+// hang, no huge allocation, no NaN or infinity in any output array.
+#include "FeaturePointsTestRun.h"
+#include "vtkTestErrorObserver.h"
+
+#include <chrono>
+#include <limits>
+#include <string>
+
+namespace
+{
+struct Outcome
+{
+  vtkSmartPointer<vtkFeaturePointExtraction> Filter;
+  std::string Message; // warning or error text
+  double Seconds;
+};
+
+Outcome Run(vtkPoints* points)
+{
+  Outcome o;
+  o.Filter = vtkSmartPointer<vtkFeaturePointExtraction>::New();
+  vtkNew<vtkTest::ErrorObserver> observer;
+  o.Filter->AddObserver(vtkCommand::WarningEvent, observer);
+  o.Filter->AddObserver(vtkCommand::ErrorEvent, observer);
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  o.Filter->SetInputData(data);
+  const auto t0 = std::chrono::steady_clock::now();
+  o.Filter->Update();
+  o.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  o.Message = observer->GetWarning() ? observer->GetWarningMessage()
+                                     : (observer->GetError() ? observer->GetErrorMessage() : "");
+  return o;
+}
+
+vtkSmartPointer<vtkPoints> Copy(vtkPolyData* data)
+{
+  auto p = vtkSmartPointer<vtkPoints>::New();
+  p->DeepCopy(data->GetPoints());
+  return p;
+}
+} // namespace
+
+int TestFeaturePointBadInput(int, char*[])
+{
+  using namespace fptest;
+  int failures = 0;
+  auto expect = [&failures](const char* name, const Outcome& o, const char* words, long maxFeatures) {
+    vtkPolyData* out = o.Filter->GetOutput();
+    const long features = CountSet(Mask(out));
+    std::printf("%-22s %.2fs, %ld feature points, message: %s\n", name, o.Seconds, features,
+      o.Message.empty() ? "(none)" : o.Message.substr(o.Message.find(':') + 1).c_str());
+    FP_CHECK(AllFinite(out), "%s: NaN or infinity in an output array", name);
+    FP_CHECK(out->GetNumberOfPoints() == o.Filter->GetInputDataObject(0, 0)
+                                            ->GetNumberOfElements(vtkDataObject::POINT),
+      "%s: output point count differs from input", name);
+    FP_CHECK(features <= maxFeatures, "%s: %ld feature points", name, features);
+    if (words)
+    {
+      FP_CHECK(o.Message.find(words) != std::string::npos, "%s: message lacks '%s': %s", name,
+        words, o.Message.c_str());
+    }
+  };
+
+  {
+    vtkNew<vtkPoints> none;
+    expect("empty input", Run(none), "no points", 0);
+  }
+  {
+    Cloud few = NoisyPlane(10, 61);
+    expect("10 points", Run(Copy(few.Data)), "fewer than the", 0);
+  }
+  {
+    Cloud c = BentPlanes(8000, 62, 90.0);
+    auto p = Copy(c.Data);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    p->SetPoint(17, nan, 0.5, 0.0);
+    p->SetPoint(4000, 0.1, inf, 0.0);
+    p->SetPoint(5000, -inf, nan, inf);
+    Outcome o = Run(p);
+    expect("NaN / inf coordinates", o, "point 17", 8000);
+    FP_CHECK(Mask(o.Filter->GetOutput())->GetValue(17) == 0, "NaN point marked");
+    FP_CHECK(CountSet(Mask(o.Filter->GetOutput())) > 20, "features lost around NaN points");
+  }
+  {
+    // Every point three times, and one stack of 40 coincident points.
+    Cloud c = NoisyPlane(3000, 63);
+    vtkNew<vtkPoints> p;
+    p->SetDataTypeToDouble();
+    double x[3];
+    for (int copy = 0; copy < 3; ++copy)
+    {
+      for (vtkIdType i = 0; i < c.Data->GetNumberOfPoints(); ++i)
+      {
+        c.Data->GetPoint(i, x);
+        p->InsertNextPoint(x);
+      }
+    }
+    for (int i = 0; i < 40; ++i)
+    {
+      p->InsertNextPoint(0.5, 0.5, 0.0);
+    }
+    expect("duplicate points", Run(p), "coincide with another point", 9040);
+  }
+  {
+    vtkNew<vtkPoints> p;
+    for (int i = 0; i < 100; ++i)
+    {
+      p->InsertNextPoint(1.0, 2.0, 3.0);
+    }
+    expect("all points coincide", Run(p), "All points coincide", 0);
+  }
+  {
+    vtkNew<vtkPoints> p;
+    for (int i = 0; i < 2000; ++i)
+    {
+      p->InsertNextPoint(0.001 * i, 0.002 * i, -0.001 * i);
+    }
+    expect("collinear points", Run(p), nullptr, 2000);
+  }
+  {
+    // A regular grid on a plane: every score equal, nothing is a feature.
+    vtkNew<vtkPoints> p;
+    for (int i = 0; i < 100; ++i)
+    {
+      for (int j = 0; j < 100; ++j)
+      {
+        p->InsertNextPoint(0.01 * i, 0.01 * j, 0.0);
+      }
+    }
+    expect("exact planar grid", Run(p), nullptr, 0);
+  }
+  {
+    Cloud c = BentPlanes(8000, 64, 90.0);
+    auto p = Copy(c.Data);
+    p->InsertNextPoint(1e30, -1e30, 1e30);
+    Outcome o = Run(p);
+    expect("huge outlier", o, nullptr, 8001);
+    FP_CHECK(o.Seconds < 30.0, "huge outlier: %.1f s", o.Seconds);
+    FP_CHECK(CountSet(Mask(o.Filter->GetOutput())) > 20, "features lost next to an outlier");
+  }
+  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+}

@@ -1,0 +1,57 @@
+// F is dimensionless: the same cloud scaled by 1000, or moved by 10^6 along each axis, gives the
+// same FeatureMask (double-precision coordinates).
+#include "FeaturePointsTestRun.h"
+
+int TestFeaturePointInvariance(int, char*[])
+{
+  using namespace fptest;
+  int failures = 0;
+  Cloud cloud = BentPlanes(20000, 41, 60.0);
+  auto run = [](vtkPolyData* data) {
+    auto filter = vtkSmartPointer<vtkFeaturePointExtraction>::New();
+    filter->SetInputData(data);
+    filter->Update();
+    return filter;
+  };
+  auto reference = run(cloud.Data);
+  const long found = CountSet(Mask(reference->GetOutput()));
+  FP_CHECK(found > 50, "only %ld feature points on the reference cloud", found);
+
+  struct Transform
+  {
+    const char* Name;
+    double Scale, Offset;
+  };
+  for (const Transform& t : { Transform{ "scaled x1000", 1000.0, 0.0 },
+         Transform{ "moved by 1e6", 1.0, 1e6 }, Transform{ "scaled x0.001", 0.001, 0.0 } })
+  {
+    vtkNew<vtkPoints> moved;
+    moved->SetDataTypeToDouble();
+    moved->SetNumberOfPoints(cloud.Data->GetNumberOfPoints());
+    double p[3];
+    for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
+    {
+      cloud.Data->GetPoint(i, p);
+      for (double& c : p)
+      {
+        c = c * t.Scale + t.Offset;
+      }
+      moved->SetPoint(i, p);
+    }
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(moved);
+    auto result = run(data);
+    long differ = 0;
+    for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
+    {
+      differ +=
+        Mask(result->GetOutput())->GetValue(i) != Mask(reference->GetOutput())->GetValue(i);
+    }
+    const double ratio = result->GetMeanSpacing() / reference->GetMeanSpacing();
+    std::printf("%-14s %ld feature points, %ld mask differences, spacing ratio %.6f\n", t.Name,
+      CountSet(Mask(result->GetOutput())), differ, ratio);
+    FP_CHECK(differ == 0, "%s: %ld mask differences", t.Name, differ);
+    FP_CHECK(std::abs(ratio / t.Scale - 1.0) < 1e-6, "%s: spacing ratio %g", t.Name, ratio);
+  }
+  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+}
