@@ -279,6 +279,47 @@ double vtkFeaturePointExtraction::AutomaticThreshold(std::vector<double>& scores
   return threshold;
 }
 
+void vtkFeaturePointExtraction::WarnIfDegenerate(vtkPoints* points, const unsigned char* valid)
+{
+  // Covariance of the whole cloud about its mean, summed in point order.
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  vtkIdType count = 0;
+  double x[3];
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    if (valid[i])
+    {
+      points->GetPoint(i, x);
+      mean += Eigen::Vector3d(x[0], x[1], x[2]);
+      ++count;
+    }
+  }
+  mean /= static_cast<double>(count);
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    if (valid[i])
+    {
+      points->GetPoint(i, x);
+      const Eigen::Vector3d v = Eigen::Vector3d(x[0], x[1], x[2]) - mean;
+      cov += v * v.transpose();
+    }
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov, Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d lambda = solver.eigenvalues(); // ascending
+  const double tiny = 1e-12 * lambda[2];
+  if (lambda[1] <= tiny)
+  {
+    vtkWarningMacro("All points lie on a straight line: surface normals are undefined there, so "
+                    "the normals and SSI are arbitrary and no feature point is meaningful.");
+  }
+  else if (lambda[0] <= tiny)
+  {
+    vtkWarningMacro("All points lie on one plane: such a cloud has no crease, so any feature point "
+                    "found is a boundary or sampling effect.");
+  }
+}
+
 int vtkFeaturePointExtraction::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
@@ -422,9 +463,10 @@ int vtkFeaturePointExtraction::RequestData(
   if (neighborhoods->GetNumberOfDuplicatePoints() > 0)
   {
     vtkWarningMacro(<< neighborhoods->GetNumberOfDuplicatePoints()
-                    << " point(s) coincide with another point; the mean spacing ignores them and "
-                       "their density index is large.");
+                    << " point(s) coincide with another point; their neighbourhoods hold their "
+                       "copies, which raises their density index.");
   }
+  this->WarnIfDegenerate(points, neighborhoods->GetValidMask());
 
   // Section 3.2: candidates of the voxel pre-filter, or every valid point.
   unsigned char* isCandidate = candidate->GetPointer(0);

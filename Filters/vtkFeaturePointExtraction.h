@@ -54,7 +54,8 @@
  *
  * Bad input never crashes the filter or puts NaN in an output: points with NaN or infinite
  * coordinates are skipped (warning, scores 0); an empty input, fewer valid points than the largest
- * neighbour count plus one, or points that all coincide give a warning and all-zero scores.
+ * neighbour count plus one, or points that all coincide give a warning and all-zero scores;
+ * duplicates, and clouds whose points all lie on a line or a plane, are processed with a warning.
  *
  * @warning The per-point work runs under vtkSMPTools and depends on the point only: the output is
  * identical whatever the number of threads and the SMP backend.
@@ -68,6 +69,8 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <vector> // For AutomaticThreshold
+
+class vtkPoints;
 
 class FEATUREPOINTSFILTERS_EXPORT vtkFeaturePointExtraction : public vtkPolyDataAlgorithm
 {
@@ -224,6 +227,8 @@ protected:
   ~vtkFeaturePointExtraction() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  // Warns when all valid points lie on a line or on a plane.
+  void WarnIfDegenerate(vtkPoints* points, const unsigned char* valid);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double Alpha = 0.75;

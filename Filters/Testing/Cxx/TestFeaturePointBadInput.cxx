@@ -118,7 +118,7 @@ int TestFeaturePointBadInput(int, char*[])
     {
       p->InsertNextPoint(0.001 * i, 0.002 * i, -0.001 * i);
     }
-    expect("collinear points", Run(p), nullptr, 2000);
+    expect("collinear points", Run(p), "straight line", 2000);
   }
   {
     // A regular grid on a plane: every score equal, nothing is a feature.
@@ -130,7 +130,7 @@ int TestFeaturePointBadInput(int, char*[])
         p->InsertNextPoint(0.01 * i, 0.01 * j, 0.0);
       }
     }
-    expect("exact planar grid", Run(p), nullptr, 0);
+    expect("exact planar grid", Run(p), "one plane", 0);
   }
   {
     Cloud c = BentPlanes(8000, 64, 90.0);
