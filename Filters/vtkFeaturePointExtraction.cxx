@@ -447,7 +447,24 @@ int vtkFeaturePointExtraction::RequestData(
     return finish();
   }
 
-  const double d = neighborhoods->ComputeMeanSpacing();
+  // Without the pre-filter every point is scored: its k-nearest table also gives the spacing, so
+  // each point is searched once. With it, a 1-nearest pass over all points comes first.
+  std::vector<vtkIdType> ids;
+  std::vector<int32_t> table;
+  double d = 0.0;
+  if (this->UseVoxelFilter)
+  {
+    d = neighborhoods->ComputeMeanSpacing();
+  }
+  else
+  {
+    ids = neighborhoods->GetValidIds();
+    if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.0, 0.6))
+    {
+      return finish();
+    }
+    d = neighborhoods->ComputeMeanSpacing(ids, table, k);
+  }
   this->UpdateProgress(0.1);
   if (this->GetAbortExecute())
   {
@@ -492,29 +509,29 @@ int vtkFeaturePointExtraction::RequestData(
   // other point, so that the threshold sees the cloud's background rather than the candidates'
   // feature-rich population alone. The sample is scored but never marked, and its scores are
   // cleared from the output.
-  std::vector<vtkIdType> ids;
   std::vector<vtkIdType> background;
-  vtkIdType others = 0;
-  for (vtkIdType i = 0; i < n; ++i)
+  if (this->UseVoxelFilter)
   {
-    if (isCandidate[i])
+    vtkIdType others = 0;
+    for (vtkIdType i = 0; i < n; ++i)
     {
-      ids.push_back(i);
+      if (isCandidate[i])
+      {
+        ids.push_back(i);
+      }
+      else if (valid[i] && this->ThresholdMode == AUTOMATIC && (others++ % BackgroundStride) == 0)
+      {
+        ids.push_back(i);
+        background.push_back(i);
+      }
     }
-    else if (valid[i] && this->ThresholdMode == AUTOMATIC && (others++ % BackgroundStride) == 0)
+    // One k-nearest query per scored point, for every quantity.
+    if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.1, 0.7))
     {
-      ids.push_back(i);
-      background.push_back(i);
+      return finish();
     }
   }
   this->NumberOfCandidates = static_cast<vtkIdType>(ids.size() - background.size());
-
-  // One k-nearest query per candidate, for every quantity.
-  std::vector<int32_t> table;
-  if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.1, 0.7))
-  {
-    return finish();
-  }
 
   // m(j) for the candidates and for every point a candidate weighs in Eqs. 4 and 6.
   const double floor = MinimumMeanDistance * d;

@@ -190,6 +190,20 @@ bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)
   return true;
 }
 
+std::vector<vtkIdType> vtkPointCloudNeighborhoods::GetValidIds() const
+{
+  std::vector<vtkIdType> ids;
+  ids.reserve(this->NumberOfValidPoints);
+  for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
+  {
+    if (this->Valid[i])
+    {
+      ids.push_back(i);
+    }
+  }
+  return ids;
+}
+
 double vtkPointCloudNeighborhoods::ComputeMeanSpacing()
 {
   if (this->MeanSpacing >= 0.0)
@@ -200,20 +214,54 @@ double vtkPointCloudNeighborhoods::ComputeMeanSpacing()
   {
     return 0.0;
   }
-  std::vector<vtkIdType> ids(this->NumberOfPoints);
-  for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
-  {
-    ids[i] = i;
-  }
+  const std::vector<vtkIdType> ids = this->GetValidIds();
   std::vector<int32_t> table;
-  std::vector<double>& nearest = this->NearestDistances;
+  std::vector<double> nearest;
   this->FindNearestNeighbors(1, ids, table, &nearest);
+  this->NearestDistances.assign(this->NumberOfPoints, 0.0);
+  for (size_t r = 0; r < ids.size(); ++r)
+  {
+    this->NearestDistances[ids[r]] = nearest[r];
+  }
+  return this->FinishMeanSpacing();
+}
 
+double vtkPointCloudNeighborhoods::ComputeMeanSpacing(
+  const std::vector<vtkIdType>& ids, const std::vector<int32_t>& table, int k)
+{
+  if (this->MeanSpacing >= 0.0)
+  {
+    return this->MeanSpacing;
+  }
+  if (!this->Locator)
+  {
+    return 0.0;
+  }
+  this->NearestDistances.assign(this->NumberOfPoints, 0.0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
+    double x[3], y[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const int32_t* row = table.data() + r * k;
+      if (k > 0 && row[0] >= 0)
+      {
+        this->Points->GetPoint(ids[r], x);
+        this->Points->GetPoint(row[0], y);
+        this->NearestDistances[ids[r]] = std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
+      }
+    }
+  });
+  return this->FinishMeanSpacing();
+}
+
+double vtkPointCloudNeighborhoods::FinishMeanSpacing()
+{
+  std::vector<double>& nearest = this->NearestDistances;
   // Points whose nearest point coincides with them: look further, for the nearest distinct point.
   std::vector<vtkIdType> stacked;
   for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
   {
-    if (this->Valid[i] && table[i] >= 0 && nearest[i] == 0.0)
+    if (this->Valid[i] && nearest[i] == 0.0 && this->NumberOfValidPoints > 1)
     {
       stacked.push_back(i);
     }

@@ -56,12 +56,23 @@ public:
    */
   bool Build(vtkPoints* points);
 
+  /** The ids of the valid points, ascending. */
+  std::vector<vtkIdType> GetValidIds() const;
+
   /**
    * Compute the mean spacing d (see the class comment) with one nearest-neighbour query per valid
    * point. Returns 0 when no two valid points are apart (all coincide, or a single point).
    * The result is cached until the next Build().
    */
   double ComputeMeanSpacing();
+
+  /**
+   * The same mean spacing, taken from a k-nearest table that FindNearestNeighbors() has already
+   * filled for every valid point (`ids` lists them, row r for ids[r]), so that a caller that needs
+   * every point's neighbourhood anyway does not search twice. Returns the same value as
+   * ComputeMeanSpacing().
+   */
+  double ComputeMeanSpacing(const std::vector<vtkIdType>& ids, const std::vector<int32_t>& table, int k);
 
   /**
    * The k nearest other valid points of each point in `ids` (ascending point ids or any order),
@@ -134,6 +145,9 @@ protected:
   double Center[3] = { 0, 0, 0 };
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
   std::string ErrorText;
+
+  // Completes NearestDistances for duplicates and averages them (shared by both spacing methods).
+  double FinishMeanSpacing();
 
 private:
   vtkPointCloudNeighborhoods(const vtkPointCloudNeighborhoods&) = delete;

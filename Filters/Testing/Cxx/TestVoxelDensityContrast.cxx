@@ -69,6 +69,9 @@ int TestVoxelDensityContrast(int, char*[])
   FP_CHECK(with->GetNumberOfCandidates() == uniform.Data->GetNumberOfPoints(),
     "uniform cloud not fully scored");
   FP_CHECK(differ == 0, "%ld mask differences", differ);
+  // The spacing from the 1-nearest pass and from the k-nearest table (no pre-filter) agree.
+  FP_CHECK(with->GetMeanSpacing() == without->GetMeanSpacing(), "spacing %.17g vs %.17g",
+    with->GetMeanSpacing(), without->GetMeanSpacing());
   FP_CHECK(CountSet(Mask(with->GetOutput())) > 100, "no feature found on the uniform crease");
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
