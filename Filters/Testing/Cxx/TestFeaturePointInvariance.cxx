@@ -21,12 +21,16 @@ int TestFeaturePointInvariance(int, char*[])
   {
     const char* Name;
     double Scale, Offset;
+    int Type;
   };
-  for (const Transform& t : { Transform{ "scaled x1000", 1000.0, 0.0 },
-         Transform{ "moved by 1e6", 1.0, 1e6 }, Transform{ "scaled x0.001", 0.001, 0.0 } })
+  // The last case rounds the same cloud to single precision.
+  for (const Transform& t : { Transform{ "scaled x1000", 1000.0, 0.0, VTK_DOUBLE },
+         Transform{ "moved by 1e6", 1.0, 1e6, VTK_DOUBLE },
+         Transform{ "scaled x0.001", 0.001, 0.0, VTK_DOUBLE },
+         Transform{ "float points", 1.0, 0.0, VTK_FLOAT } })
   {
     vtkNew<vtkPoints> moved;
-    moved->SetDataTypeToDouble();
+    moved->SetDataType(t.Type);
     moved->SetNumberOfPoints(cloud.Data->GetNumberOfPoints());
     double p[3];
     for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
@@ -51,31 +55,9 @@ int TestFeaturePointInvariance(int, char*[])
     std::printf("%-14s %ld feature points, %ld mask differences, spacing ratio %.6f\n", t.Name,
       CountSet(Mask(result->GetOutput())), differ, ratio);
     FP_CHECK(differ == 0, "%s: %ld mask differences", t.Name, differ);
-    FP_CHECK(std::abs(ratio / t.Scale - 1.0) < 1e-6, "%s: spacing ratio %g", t.Name, ratio);
-  }
-  // Single-precision coordinates: the same cloud rounded to float finds the same crease.
-  {
-    vtkNew<vtkPoints> asFloat;
-    asFloat->SetDataTypeToFloat();
-    asFloat->SetNumberOfPoints(cloud.Data->GetNumberOfPoints());
-    for (vtkIdType i = 0; i < asFloat->GetNumberOfPoints(); ++i)
-    {
-      asFloat->SetPoint(i, cloud.Data->GetPoint(i));
-    }
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(asFloat);
-    auto result = run(data);
-    long differ = 0;
-    for (vtkIdType i = 0; i < asFloat->GetNumberOfPoints(); ++i)
-    {
-      differ +=
-        Mask(result->GetOutput())->GetValue(i) != Mask(reference->GetOutput())->GetValue(i);
-    }
-    std::printf("float points   %ld feature points, %ld mask differences\n",
-      CountSet(Mask(result->GetOutput())), differ);
-    FP_CHECK(asFloat->GetDataType() == VTK_FLOAT, "points are not float");
-    FP_CHECK(differ <= found / 50, "float points: %ld mask differences", differ);
-    FP_CHECK(AllFinite(result->GetOutput()), "float points: non-finite output");
+    FP_CHECK(std::abs(ratio / t.Scale - 1.0) < (t.Type == VTK_FLOAT ? 1e-4 : 1e-6),
+      "%s: spacing ratio %g", t.Name, ratio);
+    FP_CHECK(AllFinite(result->GetOutput()), "%s: non-finite output", t.Name);
   }
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
