@@ -220,111 +220,10 @@ vtkSmartPointer<ArrayT> NewZeroArray(const char* name, int components, vtkIdType
   return a;
 }
 
-double Median(std::vector<double>& v, size_t begin, size_t end)
-{
-  const size_t n = end - begin;
-  auto mid = v.begin() + begin + n / 2;
-  std::nth_element(v.begin() + begin, mid, v.begin() + end);
-  double m = *mid;
-  if (n % 2 == 0)
-  {
-    m = 0.5 * (m + *std::max_element(v.begin() + begin, mid));
-  }
-  return m;
-}
 } // namespace
 
 vtkFeaturePointExtraction::vtkFeaturePointExtraction() = default;
 vtkFeaturePointExtraction::~vtkFeaturePointExtraction() = default;
-
-double vtkFeaturePointExtraction::AutomaticThreshold(std::vector<double>& scores, double sigmas)
-{
-  if (scores.empty())
-  {
-    return 0.0;
-  }
-  std::vector<double> kept(scores);
-  std::vector<double> deviation;
-  double threshold = VTK_DOUBLE_MAX;
-  for (int round = 0; round < 50; ++round)
-  {
-    const double mu = Median(kept, 0, kept.size());
-    deviation.resize(kept.size());
-    for (size_t i = 0; i < kept.size(); ++i)
-    {
-      deviation[i] = std::abs(kept[i] - mu);
-    }
-    const double mad = Median(deviation, 0, deviation.size());
-    const double s = std::max(1.4826 * mad, 0.01 * std::abs(mu));
-    const double next = mu + sigmas * s;
-    if (next == threshold)
-    {
-      break;
-    }
-    threshold = next;
-    size_t m = 0;
-    for (double value : scores)
-    {
-      if (value <= threshold)
-      {
-        kept[m++] = value;
-      }
-    }
-    kept.resize(m);
-    if (m == 0)
-    {
-      break;
-    }
-  }
-  return threshold;
-}
-
-void vtkFeaturePointExtraction::WarnIfDegenerate(vtkPoints* points, const unsigned char* valid)
-{
-  // Covariance of the whole cloud about its mean, summed in point order.
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  vtkIdType count = 0;
-  double x[3];
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    if (valid[i])
-    {
-      points->GetPoint(i, x);
-      mean += Eigen::Vector3d(x[0], x[1], x[2]);
-      ++count;
-    }
-  }
-  mean /= static_cast<double>(count);
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    if (valid[i])
-    {
-      points->GetPoint(i, x);
-      const Eigen::Vector3d v = Eigen::Vector3d(x[0], x[1], x[2]) - mean;
-      cov += v * v.transpose();
-    }
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov, Eigen::EigenvaluesOnly);
-  const Eigen::Vector3d lambda = solver.eigenvalues(); // ascending
-  const double tiny = 1e-12 * lambda[2];
-  if (lambda[1] <= tiny)
-  {
-    vtkWarningMacro("All points lie on a straight line: surface normals are undefined there, so "
-                    "the normals and SSI are arbitrary and no feature point is meaningful.");
-  }
-  else if (lambda[0] <= tiny)
-  {
-    vtkWarningMacro("All points lie on one plane: such a cloud has no crease, so any feature point "
-                    "found is a boundary or sampling effect.");
-  }
-}
-
-int vtkFeaturePointExtraction::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
-  return 1;
-}
 
 int vtkFeaturePointExtraction::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -335,10 +234,7 @@ int vtkFeaturePointExtraction::RequestData(
   {
     return 0;
   }
-  this->MeanSpacing = 0.0;
-  this->ThresholdUsed = 0.0;
-  this->NumberOfCandidates = 0;
-  this->NumberOfFeaturePoints = 0;
+  this->ResetFigures();
 
   const vtkIdType n = input->GetNumberOfPoints();
   vtkPoints* points = input->GetPoints();
@@ -348,102 +244,20 @@ int vtkFeaturePointExtraction::RequestData(
   auto score = NewZeroArray<vtkFloatArray>("F", 1, n);
   auto candidate = NewZeroArray<vtkUnsignedCharArray>("Candidate", 1, n);
   auto mask = NewZeroArray<vtkUnsignedCharArray>("FeatureMask", 1, n);
-
   // Assembles the output from whatever the arrays hold when it is called.
   auto finish = [&]() {
-    vtkNew<vtkPolyData> full;
-    if (points)
-    {
-      full->SetPoints(points);
-    }
-    else
-    {
-      full->SetPoints(vtkNew<vtkPoints>());
-    }
-    full->GetPointData()->PassData(input->GetPointData());
-    for (vtkDataArray* a :
-      { normals.GetPointer(), ssi.GetPointer(), pdi.GetPointer(), score.GetPointer() })
-    {
-      full->GetPointData()->AddArray(a);
-    }
-    full->GetPointData()->AddArray(candidate);
-    full->GetPointData()->AddArray(mask);
-    full->GetPointData()->SetActiveScalars("F");
-
-    vtkNew<vtkDoubleArray> spacing;
-    spacing->SetName("MeanSpacing");
-    spacing->InsertNextValue(this->MeanSpacing);
-    vtkNew<vtkDoubleArray> threshold;
-    threshold->SetName("FeatureThreshold");
-    threshold->InsertNextValue(this->ThresholdUsed);
-
-    if (!this->OutputFeaturesOnly)
-    {
-      output->ShallowCopy(full);
-      output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(n));
-    }
-    else
-    {
-      const vtkIdType nf = this->NumberOfFeaturePoints;
-      vtkNew<vtkPoints> kept;
-      kept->SetDataType(points ? points->GetDataType() : VTK_FLOAT);
-      kept->SetNumberOfPoints(nf);
-      vtkNew<vtkIdTypeArray> original;
-      original->SetName("vtkOriginalPointIds");
-      original->SetNumberOfValues(nf);
-      vtkPointData* outPD = output->GetPointData();
-      outPD->CopyAllocate(full->GetPointData(), nf);
-      vtkIdType j = 0;
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        if (mask->GetValue(i))
-        {
-          kept->SetPoint(j, points->GetPoint(i));
-          outPD->CopyData(full->GetPointData(), i, j);
-          original->SetValue(j, i);
-          ++j;
-        }
-      }
-      outPD->SetNumberOfTuples(nf);
-      outPD->AddArray(original);
-      outPD->SetActiveScalars("F");
-      output->SetPoints(kept);
-      output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(nf));
-    }
-    output->GetFieldData()->AddArray(spacing);
-    output->GetFieldData()->AddArray(threshold);
-    return 1;
+    return this->AssembleOutput(input, output,
+      { normals.GetPointer(), ssi.GetPointer(), pdi.GetPointer(), score.GetPointer(),
+        candidate.GetPointer() },
+      mask);
   };
 
-  if (n == 0)
-  {
-    vtkWarningMacro("The input has no points: the output is empty.");
-    return finish();
-  }
-
-  vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
-  if (!neighborhoods->Build(points))
-  {
-    vtkErrorMacro(<< "Cannot process the input: " << neighborhoods->GetErrorText()
-                  << ". All scores are 0 and no point is a feature point.");
-    return finish();
-  }
-  const vtkIdType nValid = neighborhoods->GetNumberOfValidPoints();
-  if (neighborhoods->GetFirstInvalidPoint() >= 0)
-  {
-    vtkWarningMacro(<< n - nValid << " of " << n
-                    << " points have NaN or infinite coordinates (the first is point "
-                    << neighborhoods->GetFirstInvalidPoint()
-                    << "); they are skipped: scores 0, never feature points.");
-  }
   const int k = std::max(std::max(this->NormalNeighbors, this->SSINeighbors),
     std::max(this->DensityNeighbors,
       this->SSICenter == DENSITY_WEIGHTED_MEAN ? this->CenterNeighbors : 0));
-  if (nValid < k + 1)
+  vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+  if (!this->PrepareNeighborhoods(points, n, k, neighborhoods))
   {
-    vtkWarningMacro(<< "The input has " << nValid << " valid point(s), fewer than the " << k + 1
-                    << " needed for neighbourhoods of " << k
-                    << " points: all scores are 0 and no point is a feature point.");
     return finish();
   }
 
@@ -470,20 +284,10 @@ int vtkFeaturePointExtraction::RequestData(
   {
     return finish();
   }
-  if (!(d > 0.0))
+  if (!this->CheckSpacing(d, neighborhoods))
   {
-    vtkWarningMacro("All points coincide: the point spacing is 0, all scores are 0 and no point "
-                    "is a feature point.");
     return finish();
   }
-  this->MeanSpacing = d;
-  if (neighborhoods->GetNumberOfDuplicatePoints() > 0)
-  {
-    vtkWarningMacro(<< neighborhoods->GetNumberOfDuplicatePoints()
-                    << " point(s) coincide with another point; their neighbourhoods hold their "
-                       "copies, which raises their density index.");
-  }
-  this->WarnIfDegenerate(points, neighborhoods->GetValidMask());
 
   // Section 3.2: candidates of the voxel pre-filter, or every valid point.
   unsigned char* isCandidate = candidate->GetPointer(0);
@@ -589,29 +393,13 @@ int vtkFeaturePointExtraction::RequestData(
   this->UpdateProgress(0.9);
 
   // Threshold and mask, decided on the stored (float) F so that the output agrees with itself.
-  const float* f = score->GetPointer(0);
-  if (this->ThresholdMode == AUTOMATIC)
+  // For the AUTOMATIC rule each background point stands for BackgroundStride non-candidates.
+  std::vector<int> weights(ids.size(), 1);
+  for (size_t r = 0; r < ids.size(); ++r)
   {
-    // Each background point stands for BackgroundStride non-candidates.
-    std::vector<double> scores;
-    scores.reserve(ids.size() + background.size() * (BackgroundStride - 1));
-    for (vtkIdType id : ids)
-    {
-      scores.insert(scores.end(), isCandidate[id] ? 1 : BackgroundStride, f[id]);
-    }
-    this->ThresholdUsed = AutomaticThreshold(scores, this->ThresholdSigmas);
+    weights[r] = isCandidate[ids[r]] ? 1 : static_cast<int>(BackgroundStride);
   }
-  else
-  {
-    this->ThresholdUsed = this->Threshold;
-  }
-  unsigned char* isFeature = mask->GetPointer(0);
-  vtkIdType features = 0;
-  for (vtkIdType id : ids)
-  {
-    isFeature[id] = isCandidate[id] && f[id] > this->ThresholdUsed ? 1 : 0;
-    features += isFeature[id];
-  }
+  this->ApplyThreshold(score->GetPointer(0), ids, &weights, isCandidate, mask->GetPointer(0));
   for (vtkIdType id : background)
   {
     std::fill_n(normals->GetPointer(3 * id), 3, 0.0f);
@@ -619,7 +407,6 @@ int vtkFeaturePointExtraction::RequestData(
     pdi->SetValue(id, 0.0f);
     score->SetValue(id, 0.0f);
   }
-  this->NumberOfFeaturePoints = features;
   this->UpdateProgress(1.0);
   return finish();
 }
@@ -638,8 +425,4 @@ void vtkFeaturePointExtraction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VoxelSizeFactor: " << this->VoxelSizeFactor << "\n";
   os << indent << "DensityContrast: " << this->DensityContrast << "\n";
   os << indent << "VoxelContrastRule: " << this->VoxelContrastRule << "\n";
-  os << indent << "ThresholdMode: " << this->ThresholdMode << "\n";
-  os << indent << "Threshold: " << this->Threshold << "\n";
-  os << indent << "ThresholdSigmas: " << this->ThresholdSigmas << "\n";
-  os << indent << "OutputFeaturesOnly: " << this->OutputFeaturesOnly << "\n";
 }

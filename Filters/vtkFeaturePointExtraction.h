@@ -60,35 +60,26 @@
  * @warning The per-point work runs under vtkSMPTools and depends on the point only: the output is
  * identical whatever the number of threads and the SMP backend.
  *
- * @sa vtkVoxelDensityContrastFilter vtkPointCloudNeighborhoods vtkPCANormalEstimation
+ * @sa vtkFeaturePointDetector vtkVoxelDensityContrastFilter vtkPointCloudNeighborhoods
+ * vtkSmoothShrinkIndexFeatures vtkPCANormalEstimation
  */
 #ifndef vtkFeaturePointExtraction_h
 #define vtkFeaturePointExtraction_h
 
 #include "FeaturePointsFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkFeaturePointDetector.h"
 
-#include <vector> // For AutomaticThreshold
-
-class vtkPoints;
-
-class FEATUREPOINTSFILTERS_EXPORT vtkFeaturePointExtraction : public vtkPolyDataAlgorithm
+class FEATUREPOINTSFILTERS_EXPORT vtkFeaturePointExtraction : public vtkFeaturePointDetector
 {
 public:
   static vtkFeaturePointExtraction* New();
-  vtkTypeMacro(vtkFeaturePointExtraction, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkFeaturePointExtraction, vtkFeaturePointDetector);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum SSICenters
   {
     POINT = 0,                 ///< Eq. 2 (Nie 2016): the point itself
     DENSITY_WEIGHTED_MEAN = 1, ///< Eq. 6: the density-weighted mean of the point's neighbourhood
-  };
-
-  enum ThresholdModes
-  {
-    AUTOMATIC = 0, ///< robust rule on the score distribution (see the class comment)
-    ABSOLUTE = 1,  ///< F > Threshold
   };
 
   ///@{
@@ -173,62 +164,13 @@ public:
   vtkGetMacro(VoxelContrastRule, int);
   ///@}
 
-  ///@{
-  /** AUTOMATIC (default) or ABSOLUTE threshold on F. */
-  vtkSetClampMacro(ThresholdMode, int, AUTOMATIC, ABSOLUTE);
-  vtkGetMacro(ThresholdMode, int);
-  void SetThresholdModeToAutomatic() { this->SetThresholdMode(AUTOMATIC); }
-  void SetThresholdModeToAbsolute() { this->SetThresholdMode(ABSOLUTE); }
-  ///@}
-
-  ///@{
-  /** The threshold on F in ABSOLUTE mode (F is dimensionless). Default 1. */
-  vtkSetMacro(Threshold, double);
-  vtkGetMacro(Threshold, double);
-  ///@}
-
-  ///@{
-  /**
-   * z of the AUTOMATIC rule: how many robust standard deviations above the median score a feature
-   * point lies. Default 5: under a Gaussian background fewer than 1 point in a million exceeds
-   * it; the real background (an absolute value, sampling irregularity) has heavier tails, and 5
-   * keeps noisy smooth shapes below 2 false feature points per 1000.
-   */
-  vtkSetClampMacro(ThresholdSigmas, double, 0.0, 1000.0);
-  vtkGetMacro(ThresholdSigmas, double);
-  ///@}
-
-  ///@{
-  /** Output only the feature points, with `vtkOriginalPointIds`. Default off. */
-  vtkSetMacro(OutputFeaturesOnly, bool);
-  vtkGetMacro(OutputFeaturesOnly, bool);
-  vtkBooleanMacro(OutputFeaturesOnly, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Figures of the last run: the mean spacing d, the threshold applied to F, the number of points
-   * scored (candidates) and of feature points.
-   */
-  vtkGetMacro(MeanSpacing, double);
-  vtkGetMacro(ThresholdUsed, double);
-  vtkGetMacro(NumberOfCandidates, vtkIdType);
-  vtkGetMacro(NumberOfFeaturePoints, vtkIdType);
-  ///@}
-
-  /**
-   * The AUTOMATIC threshold rule on a set of scores (see the class comment). Returns 0 for an empty
-   * set. The vector is reordered.
-   */
-  static double AutomaticThreshold(std::vector<double>& scores, double sigmas);
+  /** The score array: "F". ABSOLUTE thresholds are on F (dimensionless; default 1). */
+  const char* GetScoreArrayName() const override { return "F"; }
 
 protected:
   vtkFeaturePointExtraction();
   ~vtkFeaturePointExtraction() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  // Warns when all valid points lie on a line or on a plane.
-  void WarnIfDegenerate(vtkPoints* points, const unsigned char* valid);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double Alpha = 0.75;
@@ -242,15 +184,6 @@ protected:
   double VoxelSizeFactor = 2.5;
   double DensityContrast = 1.5;
   int VoxelContrastRule = 1;
-  int ThresholdMode = AUTOMATIC;
-  double Threshold = 1.0;
-  double ThresholdSigmas = 5.0;
-  bool OutputFeaturesOnly = false;
-
-  double MeanSpacing = 0.0;
-  double ThresholdUsed = 0.0;
-  vtkIdType NumberOfCandidates = 0;
-  vtkIdType NumberOfFeaturePoints = 0;
 
 private:
   vtkFeaturePointExtraction(const vtkFeaturePointExtraction&) = delete;

@@ -1,0 +1,325 @@
+#include "vtkFeaturePointDetector.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkPointCloudNeighborhoods.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+double Median(std::vector<double>& v)
+{
+  const size_t n = v.size();
+  auto mid = v.begin() + n / 2;
+  std::nth_element(v.begin(), mid, v.end());
+  double m = *mid;
+  if (n % 2 == 0)
+  {
+    m = 0.5 * (m + *std::max_element(v.begin(), mid));
+  }
+  return m;
+}
+} // namespace
+
+vtkFeaturePointDetector::vtkFeaturePointDetector() = default;
+vtkFeaturePointDetector::~vtkFeaturePointDetector() = default;
+
+int vtkFeaturePointDetector::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+void vtkFeaturePointDetector::ResetFigures()
+{
+  this->MeanSpacing = 0.0;
+  this->ThresholdUsed = 0.0;
+  this->NumberOfCandidates = 0;
+  this->NumberOfFeaturePoints = 0;
+}
+
+double vtkFeaturePointDetector::AutomaticThreshold(std::vector<double>& scores, double sigmas)
+{
+  if (scores.empty())
+  {
+    return 0.0;
+  }
+  std::vector<double> kept(scores);
+  std::vector<double> deviation;
+  double threshold = VTK_DOUBLE_MAX;
+  for (int round = 0; round < 50; ++round)
+  {
+    const double mu = Median(kept);
+    deviation.resize(kept.size());
+    for (size_t i = 0; i < kept.size(); ++i)
+    {
+      deviation[i] = std::abs(kept[i] - mu);
+    }
+    const double mad = Median(deviation);
+    const double s = std::max(1.4826 * mad, 0.01 * std::abs(mu));
+    const double next = mu + sigmas * s;
+    if (next == threshold)
+    {
+      break;
+    }
+    threshold = next;
+    size_t m = 0;
+    for (double value : scores)
+    {
+      if (value <= threshold)
+      {
+        kept[m++] = value;
+      }
+    }
+    kept.resize(m);
+    if (m == 0)
+    {
+      break;
+    }
+  }
+  return threshold;
+}
+
+bool vtkFeaturePointDetector::PrepareNeighborhoods(
+  vtkPoints* points, vtkIdType n, int k, vtkPointCloudNeighborhoods* neighborhoods)
+{
+  if (n == 0 || !points)
+  {
+    vtkWarningMacro("The input has no points: the output is empty.");
+    return false;
+  }
+  if (!neighborhoods->Build(points))
+  {
+    vtkErrorMacro(<< "Cannot process the input: " << neighborhoods->GetErrorText()
+                  << ". All scores are 0 and no point is a feature point.");
+    return false;
+  }
+  const vtkIdType nValid = neighborhoods->GetNumberOfValidPoints();
+  if (neighborhoods->GetFirstInvalidPoint() >= 0)
+  {
+    vtkWarningMacro(<< n - nValid << " of " << n
+                    << " points have NaN or infinite coordinates (the first is point "
+                    << neighborhoods->GetFirstInvalidPoint()
+                    << "); they are skipped: scores 0, never feature points.");
+  }
+  if (nValid < k + 1)
+  {
+    vtkWarningMacro(<< "The input has " << nValid << " valid point(s), fewer than the " << k + 1
+                    << " needed for neighbourhoods of " << k
+                    << " points: all scores are 0 and no point is a feature point.");
+    return false;
+  }
+  return true;
+}
+
+bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods* neighborhoods)
+{
+  if (!(d > 0.0))
+  {
+    vtkWarningMacro("All points coincide: the point spacing is 0, all scores are 0 and no point "
+                    "is a feature point.");
+    return false;
+  }
+  this->MeanSpacing = d;
+  if (neighborhoods->GetNumberOfDuplicatePoints() > 0)
+  {
+    vtkWarningMacro(<< neighborhoods->GetNumberOfDuplicatePoints()
+                    << " point(s) coincide with another point; their neighbourhoods hold their "
+                       "copies, which raises their density.");
+  }
+  this->WarnIfDegenerate(neighborhoods->GetPoints(), neighborhoods->GetValidMask());
+  return true;
+}
+
+bool vtkFeaturePointDetector::SearchAllPoints(vtkPoints* points, vtkIdType n, int k,
+  vtkPointCloudNeighborhoods* neighborhoods, std::vector<vtkIdType>& ids,
+  std::vector<int32_t>& table, double progressEnd)
+{
+  if (!this->PrepareNeighborhoods(points, n, k, neighborhoods))
+  {
+    return false;
+  }
+  ids = neighborhoods->GetValidIds();
+  if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.0, progressEnd))
+  {
+    return false;
+  }
+  const double d = neighborhoods->ComputeMeanSpacing(ids, table, k);
+  if (!this->CheckSpacing(d, neighborhoods))
+  {
+    return false;
+  }
+  this->NumberOfCandidates = static_cast<vtkIdType>(ids.size());
+  return !this->GetAbortExecute();
+}
+
+void vtkFeaturePointDetector::ApplyThreshold(const float* score,
+  const std::vector<vtkIdType>& ids, const std::vector<int>* weights,
+  const unsigned char* eligible, unsigned char* mask)
+{
+  if (this->ThresholdMode == AUTOMATIC)
+  {
+    std::vector<double> scores;
+    size_t total = ids.size();
+    if (weights)
+    {
+      total = 0;
+      for (int w : *weights)
+      {
+        total += static_cast<size_t>(w);
+      }
+    }
+    scores.reserve(total);
+    for (size_t r = 0; r < ids.size(); ++r)
+    {
+      scores.insert(scores.end(), weights ? (*weights)[r] : 1, score[ids[r]]);
+    }
+    this->ThresholdUsed = AutomaticThreshold(scores, this->ThresholdSigmas);
+  }
+  else
+  {
+    this->ThresholdUsed = this->Threshold;
+  }
+  vtkIdType features = 0;
+  for (vtkIdType id : ids)
+  {
+    mask[id] = (!eligible || eligible[id]) && score[id] > this->ThresholdUsed ? 1 : 0;
+    features += mask[id];
+  }
+  this->NumberOfFeaturePoints = features;
+}
+
+int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* output,
+  const std::vector<vtkDataArray*>& arrays, vtkUnsignedCharArray* mask)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkPoints* points = input->GetPoints();
+  vtkNew<vtkPolyData> full;
+  if (points)
+  {
+    full->SetPoints(points);
+  }
+  else
+  {
+    full->SetPoints(vtkNew<vtkPoints>());
+  }
+  full->GetPointData()->PassData(input->GetPointData());
+  for (vtkDataArray* a : arrays)
+  {
+    full->GetPointData()->AddArray(a);
+  }
+  full->GetPointData()->AddArray(mask);
+  full->GetPointData()->SetActiveScalars(this->GetScoreArrayName());
+
+  vtkNew<vtkDoubleArray> spacing;
+  spacing->SetName("MeanSpacing");
+  spacing->InsertNextValue(this->MeanSpacing);
+  vtkNew<vtkDoubleArray> threshold;
+  threshold->SetName("FeatureThreshold");
+  threshold->InsertNextValue(this->ThresholdUsed);
+
+  if (!this->OutputFeaturesOnly)
+  {
+    output->ShallowCopy(full);
+    output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(n));
+  }
+  else
+  {
+    vtkIdType nf = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      nf += mask->GetValue(i) ? 1 : 0;
+    }
+    vtkNew<vtkPoints> kept;
+    kept->SetDataType(points ? points->GetDataType() : VTK_FLOAT);
+    kept->SetNumberOfPoints(nf);
+    vtkNew<vtkIdTypeArray> original;
+    original->SetName("vtkOriginalPointIds");
+    original->SetNumberOfValues(nf);
+    vtkPointData* outPD = output->GetPointData();
+    outPD->CopyAllocate(full->GetPointData(), nf);
+    vtkIdType j = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (mask->GetValue(i))
+      {
+        kept->SetPoint(j, points->GetPoint(i));
+        outPD->CopyData(full->GetPointData(), i, j);
+        original->SetValue(j, i);
+        ++j;
+      }
+    }
+    outPD->SetNumberOfTuples(nf);
+    outPD->AddArray(original);
+    outPD->SetActiveScalars(this->GetScoreArrayName());
+    output->SetPoints(kept);
+    output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(nf));
+  }
+  output->GetFieldData()->AddArray(spacing);
+  output->GetFieldData()->AddArray(threshold);
+  return 1;
+}
+
+void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned char* valid)
+{
+  // Covariance of the whole cloud about its mean, summed in point order.
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  vtkIdType count = 0;
+  double x[3];
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    if (valid[i])
+    {
+      points->GetPoint(i, x);
+      mean += Eigen::Vector3d(x[0], x[1], x[2]);
+      ++count;
+    }
+  }
+  mean /= static_cast<double>(std::max<vtkIdType>(count, 1));
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    if (valid[i])
+    {
+      points->GetPoint(i, x);
+      const Eigen::Vector3d v = Eigen::Vector3d(x[0], x[1], x[2]) - mean;
+      cov += v * v.transpose();
+    }
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov, Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d lambda = solver.eigenvalues(); // ascending
+  const double tiny = 1e-12 * lambda[2];
+  if (lambda[1] <= tiny)
+  {
+    vtkWarningMacro("All points lie on a straight line: surface normals are undefined there, so "
+                    "the normals and scores are arbitrary and no feature point is meaningful.");
+  }
+  else if (lambda[0] <= tiny)
+  {
+    vtkWarningMacro("All points lie on one plane: such a cloud has no crease, so any feature point "
+                    "found is a boundary or sampling effect.");
+  }
+}
+
+void vtkFeaturePointDetector::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ThresholdMode: " << this->ThresholdMode << "\n";
+  os << indent << "Threshold: " << this->Threshold << "\n";
+  os << indent << "ThresholdSigmas: " << this->ThresholdSigmas << "\n";
+  os << indent << "OutputFeaturesOnly: " << this->OutputFeaturesOnly << "\n";
+}

@@ -1,0 +1,170 @@
+/**
+ * @class   vtkFeaturePointDetector
+ * @brief   Abstract base of this module's feature point filters: one per-point score, a threshold
+ *          on it, a `FeatureMask`, the same output conventions for every method.
+ *
+ * A subclass computes a score per point (the proposed method's F, PCA surface variation, ...);
+ * this class supplies what all methods share, so that they can be compared on equal terms:
+ *
+ * - Input: any vtkPointSet; only its points are used. Points with NaN or infinite coordinates are
+ *   skipped (warning; scores 0, never feature points).
+ * - Neighbourhoods: one vtkPointCloudNeighborhoods (one vtkStaticPointLocator, one k-nearest
+ *   query per point) and the mean spacing d of the cloud, the unit of every radius.
+ * - Threshold: AUTOMATIC (default) treats the scores as a background distribution with a
+ *   minority of outliers: its centre mu and scale s are the median and the normalized median
+ *   absolute deviation (1.4826 MAD), re-estimated after discarding the values above mu + z s until
+ *   they settle (at most 50 rounds); the threshold is mu + z s with z = ThresholdSigmas, and s is
+ *   never taken below 1% of mu, so that scores that are all equal yield no feature. ABSOLUTE: the
+ *   value of Threshold, in the unit of the method's score.
+ * - Output: a vtkPolyData with the input points in input order, all input point data, one vertex
+ *   cell per point, the method's arrays and `FeatureMask` (uint8, 1 for a feature point); with
+ *   OutputFeaturesOnly only the feature points, with the same arrays and `vtkOriginalPointIds`.
+ *   The field data holds `MeanSpacing` and `FeatureThreshold`.
+ *
+ * @sa vtkFeaturePointExtraction vtkSurfaceVariationFeatures vtkCurvatureDensityFeatures
+ * vtkSmoothShrinkIndexFeatures vtkPointCloudNeighborhoods
+ */
+#ifndef vtkFeaturePointDetector_h
+#define vtkFeaturePointDetector_h
+
+#include "FeaturePointsFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <cstdint> // For int32_t
+#include <vector>  // For AutomaticThreshold
+
+class vtkDataArray;
+class vtkPointCloudNeighborhoods;
+class vtkPoints;
+class vtkPointSet;
+class vtkUnsignedCharArray;
+
+class FEATUREPOINTSFILTERS_EXPORT vtkFeaturePointDetector : public vtkPolyDataAlgorithm
+{
+public:
+  vtkTypeMacro(vtkFeaturePointDetector, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ThresholdModes
+  {
+    AUTOMATIC = 0, ///< robust rule on the score distribution (see the class comment)
+    ABSOLUTE = 1,  ///< score > Threshold
+  };
+
+  ///@{
+  /** AUTOMATIC (default) or ABSOLUTE threshold on the score. */
+  vtkSetClampMacro(ThresholdMode, int, AUTOMATIC, ABSOLUTE);
+  vtkGetMacro(ThresholdMode, int);
+  void SetThresholdModeToAutomatic() { this->SetThresholdMode(AUTOMATIC); }
+  void SetThresholdModeToAbsolute() { this->SetThresholdMode(ABSOLUTE); }
+  ///@}
+
+  ///@{
+  /** The threshold of ABSOLUTE mode, in the unit of the method's score (see the subclass). */
+  vtkSetMacro(Threshold, double);
+  vtkGetMacro(Threshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * z of the AUTOMATIC rule: how many robust standard deviations above the median score a feature
+   * point lies. Default 5: under a Gaussian background fewer than 1 point in a million exceeds
+   * it; the real background (an absolute value, sampling irregularity) has heavier tails, and 5
+   * keeps noisy smooth shapes below 2 false feature points per 1000 with the proposed method.
+   */
+  vtkSetClampMacro(ThresholdSigmas, double, 0.0, 1000.0);
+  vtkGetMacro(ThresholdSigmas, double);
+  ///@}
+
+  ///@{
+  /** Output only the feature points, with `vtkOriginalPointIds`. Default off. */
+  vtkSetMacro(OutputFeaturesOnly, bool);
+  vtkGetMacro(OutputFeaturesOnly, bool);
+  vtkBooleanMacro(OutputFeaturesOnly, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Figures of the last run: the mean spacing d, the threshold applied to the score, the number
+   * of points scored (candidates) and of feature points.
+   */
+  vtkGetMacro(MeanSpacing, double);
+  vtkGetMacro(ThresholdUsed, double);
+  vtkGetMacro(NumberOfCandidates, vtkIdType);
+  vtkGetMacro(NumberOfFeaturePoints, vtkIdType);
+  ///@}
+
+  /** Name of the point array the threshold applies to ("F", "SurfaceVariation", ...). */
+  virtual const char* GetScoreArrayName() const = 0;
+
+  /**
+   * The AUTOMATIC threshold rule on a set of scores (see the class comment). Returns 0 for an empty
+   * set. The vector is reordered.
+   */
+  static double AutomaticThreshold(std::vector<double>& scores, double sigmas);
+
+protected:
+  vtkFeaturePointDetector();
+  ~vtkFeaturePointDetector() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  /** Clears the figures of the last run. */
+  void ResetFigures();
+
+  /**
+   * Builds `neighborhoods` over the input's points and checks that neighbourhoods of k points
+   * exist. Warns (naming the problem) and returns false when nothing can be scored.
+   */
+  bool PrepareNeighborhoods(vtkPoints* points, vtkIdType n, int k,
+    vtkPointCloudNeighborhoods* neighborhoods);
+
+  /**
+   * Checks the mean spacing d found by `neighborhoods` (sets MeanSpacing) and warns about
+   * duplicates and clouds that lie on a line or a plane. Returns false when all points coincide.
+   */
+  bool CheckSpacing(double d, vtkPointCloudNeighborhoods* neighborhoods);
+
+  /**
+   * The usual path of a method that scores every valid point: prepare, find the k nearest of
+   * every valid point (progress 0 to progressEnd) and the mean spacing from that table. Returns
+   * false when nothing can be scored (after a warning) or on abort.
+   */
+  bool SearchAllPoints(vtkPoints* points, vtkIdType n, int k,
+    vtkPointCloudNeighborhoods* neighborhoods, std::vector<vtkIdType>& ids,
+    std::vector<int32_t>& table, double progressEnd);
+
+  /**
+   * Sets ThresholdUsed (AUTOMATIC rule over the scores of `ids`, each counted `weights[r]` times
+   * when weights are given, or Threshold) and the mask: 1 where eligible (all when null) and
+   * score > threshold. Sets NumberOfFeaturePoints.
+   */
+  void ApplyThreshold(const float* score, const std::vector<vtkIdType>& ids,
+    const std::vector<int>* weights, const unsigned char* eligible, unsigned char* mask);
+
+  /**
+   * Assembles the output (see the class comment) from the input, the method's arrays (n tuples
+   * each) and the mask; the score array becomes the active scalars.
+   */
+  int AssembleOutput(vtkPointSet* input, vtkPolyData* output,
+    const std::vector<vtkDataArray*>& arrays, vtkUnsignedCharArray* mask);
+
+  // Warns when all valid points lie on a line or on a plane.
+  void WarnIfDegenerate(vtkPoints* points, const unsigned char* valid);
+
+  int ThresholdMode = AUTOMATIC;
+  double Threshold = 1.0;
+  double ThresholdSigmas = 5.0;
+  bool OutputFeaturesOnly = false;
+
+  double MeanSpacing = 0.0;
+  double ThresholdUsed = 0.0;
+  vtkIdType NumberOfCandidates = 0;
+  vtkIdType NumberOfFeaturePoints = 0;
+
+private:
+  vtkFeaturePointDetector(const vtkFeaturePointDetector&) = delete;
+  void operator=(const vtkFeaturePointDetector&) = delete;
+};
+
+#endif
