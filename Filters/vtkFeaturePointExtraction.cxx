@@ -18,6 +18,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVoxelDensityContrastFilter.h"
+#include "vtkFeaturePointsLocalPCA.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -35,17 +36,6 @@ constexpr double MinimumMeanDistance = 1e-3;
 
 // One non-candidate in this many is scored to show the AUTOMATIC threshold the background.
 constexpr vtkIdType BackgroundStride = 8;
-
-// Number of filled entries at the head of a neighbour row (rows are padded with -1).
-inline int RowLength(const int32_t* row, int k)
-{
-  int n = 0;
-  while (n < k && row[n] >= 0)
-  {
-    ++n;
-  }
-  return n;
-}
 
 // Eq. 7: mean distance from point `id` to the first k entries of its row.
 inline double MeanDistance(vtkPoints* points, vtkIdType id, const int32_t* row, int k, double floor)
@@ -96,60 +86,24 @@ struct ScoreWorker
   void operator()(vtkIdType begin, vtkIdType end)
   {
     std::vector<double>& q = this->Scratch.Local();
-    double x[3], y[3];
+    double x[3];
     for (vtkIdType r = begin; r < end; ++r)
     {
       const vtkIdType id = this->Ids[r];
       const int32_t* row = this->Table + r * this->P.K;
-      const int n = RowLength(row, this->P.K);
-      this->Points->GetPoint(id, x);
-      // Work relative to P_i: large offsets cost no precision.
-      for (int j = 0; j < n; ++j)
-      {
-        this->Points->GetPoint(row[j], y);
-        q[3 * j] = y[0] - x[0];
-        q[3 * j + 1] = y[1] - x[1];
-        q[3 * j + 2] = y[2] - x[2];
-      }
+      const int n = featurepoints::RowLength(row, this->P.K);
+      featurepoints::GatherRelative(this->Points, id, row, n, q.data(), x);
       auto dist2 = [&q](int j) {
         return q[3 * j] * q[3 * j] + q[3 * j + 1] * q[3 * j + 1] + q[3 * j + 2] * q[3 * j + 2];
       };
 
       // Eq. 3: PCA normal of the NormalNeighbors nearest points.
       const int kn = std::min(n, this->P.NormalNeighbors);
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for (int j = 0; j < kn; ++j)
-      {
-        mean += Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
-      }
-      mean /= std::max(kn, 1);
-      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-      for (int j = 0; j < kn; ++j)
-      {
-        const Eigen::Vector3d v = Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]) - mean;
-        cov += v * v.transpose();
-      }
-      Eigen::Vector3d normal(0.0, 0.0, 0.0);
-      if (kn >= 3 && cov.allFinite())
-      {
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-        solver.computeDirect(cov / std::max(kn, 1));
-        normal = solver.eigenvectors().col(0);
-        if (!normal.allFinite() || normal.squaredNorm() == 0.0)
-        {
-          normal.setZero();
-        }
-        else
-        {
-          normal.normalize();
-          const Eigen::Vector3d outward(
-            x[0] - this->P.Center[0], x[1] - this->P.Center[1], x[2] - this->P.Center[2]);
-          if (normal.dot(outward) < 0.0)
-          {
-            normal = -normal;
-          }
-        }
-      }
+      const double outward[3] = { x[0] - this->P.Center[0], x[1] - this->P.Center[1],
+        x[2] - this->P.Center[2] };
+      double lambda[3], nrm[3];
+      featurepoints::LocalPCA(q.data(), kn, false, outward, lambda, nrm);
+      const Eigen::Vector3d normal(nrm[0], nrm[1], nrm[2]);
 
       // Eqs. 7, 9: m(i) and D(i).
       const double mi = this->MeanDistances[id];

@@ -182,7 +182,7 @@ protected:
   double GaussianRadiusFactor = 5.0;
   bool UseVoxelFilter = true;
   double VoxelSizeFactor = 2.5;
-  double DensityContrast = 1.5;
+  double DensityContrast = 0.5;
   int VoxelContrastRule = 1;
 
 private:

@@ -220,30 +220,56 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
   }
   std::vector<double> level(nVoxels);
   std::vector<double> blockCount(nVoxels);
-  vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType v = begin; v < end; ++v)
+  if (!block)
+  {
+    for (vtkIdType v = 0; v < nVoxels; ++v)
     {
-      if (!block)
-      {
-        level[v] = grid.Counts[v];
-        continue;
-      }
-      double sum = spacingSum[v];
-      double count = grid.Counts[v];
-      grid.ForEachNeighbor(v, [&](vtkIdType w) {
-        sum += spacingSum[w];
-        count += grid.Counts[w];
+      level[v] = grid.Counts[v];
+    }
+  }
+  else
+  {
+    // Two passes of a 3x3x3 box sum: a 5x5x5 block with tent weights, so that each density rests
+    // on enough nearest distances (a few dozen on a surface) to be measured, not guessed.
+    std::vector<double> count(nVoxels);
+    for (vtkIdType v = 0; v < nVoxels; ++v)
+    {
+      count[v] = grid.Counts[v];
+    }
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      std::vector<double> nextSum(nVoxels), nextCount(nVoxels);
+      vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType v = begin; v < end; ++v)
+        {
+          double sum = spacingSum[v];
+          double c = count[v];
+          grid.ForEachNeighbor(v, [&](vtkIdType w) {
+            sum += spacingSum[w];
+            c += count[w];
+          });
+          nextSum[v] = sum;
+          nextCount[v] = c;
+        }
       });
-      blockCount[v] = count;
-      const double h = sum / count;
+      spacingSum.swap(nextSum);
+      count.swap(nextCount);
+    }
+    for (vtkIdType v = 0; v < nVoxels; ++v)
+    {
+      blockCount[v] = count[v];
+      const double h = spacingSum[v] / count[v];
       level[v] = h > 0.0 ? 1.0 / (h * h) : VTK_DOUBLE_MAX;
     }
-  });
+  }
 
   // Contrast voxels. VOXEL_COUNTS (Filter_Algorithm): N(i) against each occupied neighbour.
-  // BLOCK_SPACING: the block density against the cloud's median block density.
+  // BLOCK_SPACING: the block density against the cloud's typical block density, by a margin of
+  // epsilon and of ContrastSigmas robust deviations of the block densities (the spread that random
+  // sampling alone gives blocks of this size).
   const double eps = this->DensityContrast;
   double reference = 0.0;
+  double spread = 0.0;
   double minimumCount = 0.0;
   if (block)
   {
@@ -251,12 +277,27 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
     auto mid = sorted.begin() + sorted.size() / 2;
     std::nth_element(sorted.begin(), mid, sorted.end());
     reference = *mid;
+    // The spread from the blocks below the median only: denser regions, a minority, sit above it
+    // and would widen a two-sided estimate.
+    std::vector<double> below;
+    for (double x : level)
+    {
+      if (x <= reference)
+      {
+        below.push_back(reference - x);
+      }
+    }
+    auto low = below.begin() + below.size() / 2;
+    std::nth_element(below.begin(), low, below.end());
+    spread = 1.4826 * *low;
     // A block with few points (the rim of a surface, a stray cluster) measures no density.
     sorted = blockCount;
     mid = sorted.begin() + sorted.size() / 2;
     std::nth_element(sorted.begin(), mid, sorted.end());
     minimumCount = 0.5 * *mid;
   }
+  const double cutoff =
+    std::max((1.0 + eps) * reference, reference + this->ContrastSigmas * spread);
   this->ReferenceLevel = reference;
   std::vector<unsigned char> contrast(nVoxels, 0);
   vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
@@ -265,7 +306,7 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
       bool found = false;
       if (block)
       {
-        found = blockCount[v] >= minimumCount && level[v] > (1.0 + eps) * reference;
+        found = blockCount[v] >= minimumCount && level[v] > cutoff;
       }
       else
       {
@@ -281,6 +322,33 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
   if (static_cast<double>(found) < this->MinimumContrastFraction * static_cast<double>(nVoxels))
   {
     std::fill(contrast.begin(), contrast.end(), 0);
+  }
+  else if (block)
+  {
+    // Hysteresis: a denser region is contiguous, so the blocks connected to a contrast voxel
+    // through blocks denser than the median by half the margin are part of it too. This keeps the
+    // edges and the thinner stretches of a denser band that the strict margin misses.
+    const double weak = reference + 0.5 * (cutoff - reference);
+    std::vector<vtkIdType> front;
+    for (vtkIdType v = 0; v < nVoxels; ++v)
+    {
+      if (contrast[v])
+      {
+        front.push_back(v);
+      }
+    }
+    while (!front.empty())
+    {
+      const vtkIdType v = front.back();
+      front.pop_back();
+      grid.ForEachNeighbor(v, [&](vtkIdType w) {
+        if (!contrast[w] && blockCount[w] >= minimumCount && level[w] > weak)
+        {
+          contrast[w] = 1;
+          front.push_back(w);
+        }
+      });
+    }
   }
   std::vector<unsigned char> keep(nVoxels, 0);
   vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
@@ -390,6 +458,7 @@ void vtkVoxelDensityContrastFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VoxelSizeFactor: " << this->VoxelSizeFactor << "\n";
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "DensityContrast: " << this->DensityContrast << "\n";
+  os << indent << "ContrastSigmas: " << this->ContrastSigmas << "\n";
   os << indent << "ContrastRule: " << this->ContrastRule << "\n";
   os << indent << "MinimumContrastFraction: " << this->MinimumContrastFraction << "\n";
 }

@@ -13,8 +13,7 @@
  * Choices the paper leaves open, made here:
  * - Empty neighbours (N(j) = 0) are ignored: a surface's voxels always have empty neighbours, and
  *   counting them would make every voxel a contrast voxel.
- * - epsilon, which the paper does not give, defaults to 1.5: two and a half times the density
- *   (randomly sampled surfaces have clumps of twice their mean density over a 3x3x3 block).
+ * - epsilon, which the paper does not give, defaults to 0.5: one and a half times the density.
  * - When fewer than MinimumContrastFraction (1 %) of the occupied voxels show contrast, the
  *   contrast is taken for the clumping of random sampling and no voxel is kept: the caller then
  *   knows that the cloud has no usable density contrast (vtkFeaturePointExtraction scores every
@@ -25,9 +24,14 @@
  *   neighbour and every point becomes a candidate (the paper notes that with uniform sampling the
  *   method becomes plain SSI).
  * - ContrastRule BLOCK_SPACING (the default) measures each voxel's density by the mean distance
- *   to the nearest other point over the points of its 3x3x3 block, h(i), as the areal density
- *   1 / h(i)^2, and calls it a contrast voxel when that density exceeds the cloud's median block
- *   density by the relative margin epsilon. Counts per voxel depend on how the surface crosses the
+ *   to the nearest other point over the points of its 5x5x5 block (two passes of a 3x3x3 box sum,
+ *   so tent weights), h(i), as the areal density 1 / h(i)^2, and calls it a contrast voxel when
+ *   that density exceeds the cloud's median block density both by the relative margin epsilon and
+ *   by ContrastSigmas robust deviations of the lower half of the block densities (so that the clumps of random
+ *   sampling, which a block of a few dozen points shows, are not taken for denser regions). Then,
+ *   as a denser region is contiguous, the blocks connected to contrast voxels through blocks that
+ *   clear half that margin join them (hysteresis), which keeps a band's edges and thinner
+ *   stretches. Counts per voxel depend on how the surface crosses the
  *   voxel (a face-aligned sheet fills fewer voxels with more points than an oblique one, by up to
  *   a factor 1.7), nearest distances do not; they come for free from the pass that measures the
  *   mean spacing. Blocks holding fewer than half the median block's points (a surface's rim, a
@@ -92,11 +96,21 @@ public:
   /**
    * epsilon: the relative excess of density that makes a voxel a contrast voxel (of its count over
    * an occupied neighbour's for VOXEL_COUNTS, of its block density over the cloud's median block
-   * density for BLOCK_SPACING).
-   * Default 1.5.
+   * density for BLOCK_SPACING). Default 0.5 (half as dense again). The paper gives no value.
    */
   vtkSetClampMacro(DensityContrast, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(DensityContrast, double);
+  ///@}
+
+  ///@{
+  /**
+   * BLOCK_SPACING only: a contrast block's density must also exceed the median block density by
+   * this many robust standard deviations of the block densities (1.4826 times the median distance
+   * to the median of the blocks below the median, which denser regions do not reach): the spread
+   * that random sampling alone gives blocks of a few dozen points. Default 4.
+   */
+  vtkSetClampMacro(ContrastSigmas, double, 0.0, 1000.0);
+  vtkGetMacro(ContrastSigmas, double);
   ///@}
 
   ///@{
@@ -153,7 +167,8 @@ protected:
 
   double VoxelSizeFactor = 2.5;
   double Spacing = 0.0;
-  double DensityContrast = 1.5;
+  double DensityContrast = 0.5;
+  double ContrastSigmas = 4.0;
   double MinimumContrastFraction = 0.01;
   int ContrastRule = BLOCK_SPACING;
 

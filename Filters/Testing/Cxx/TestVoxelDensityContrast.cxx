@@ -33,8 +33,9 @@ int TestVoxelDensityContrast(int, char*[])
     bandPoints, inBand, outBand, n - bandPoints);
   FP_CHECK(voxels->GetNumberOfContrastVoxels() > 0, "no contrast voxel found");
   FP_CHECK(inBand + outBand < n / 2, "the pre-filter kept %ld of %ld points", inBand + outBand, n);
-  FP_CHECK(outBand < 0.15 * (n - bandPoints), "%ld candidates outside the dense band", outBand);
-  FP_CHECK(inBand > 0.4 * bandPoints, "only %ld of %ld band points kept", inBand, bandPoints);
+  // Measured: all 7418 band points kept, 768 of 22582 outside (the ring of neighbour voxels).
+  FP_CHECK(outBand < 0.1 * (n - bandPoints), "%ld candidates outside the dense band", outBand);
+  FP_CHECK(inBand > 0.97 * bandPoints, "only %ld of %ld band points kept", inBand, bandPoints);
 
   // The paper's rule (raw counts of neighbouring voxels) keeps nearly everything on a real surface.
   vtkNew<vtkVoxelDensityContrastFilter> paper;

@@ -1,0 +1,190 @@
+#include "vtkCurvatureDensityFeatures.h"
+
+#include "vtkFeaturePointsLocalPCA.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointCloudNeighborhoods.h"
+#include "vtkPointSet.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkCurvatureDensityFeatures);
+
+namespace
+{
+// Pass 1: normal, curvature and density of each point.
+struct IndicatorWorker
+{
+  vtkPoints* Points;
+  const std::vector<vtkIdType>& Ids;
+  const int32_t* Table;
+  int K;
+  const double* Center;
+  float* Normals;
+  float* Curvature;
+  float* Density;
+  vtkSMPThreadLocal<std::vector<double>> Scratch;
+
+  void Initialize() { this->Scratch.Local().resize(3 * static_cast<size_t>(this->K)); }
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    std::vector<double>& q = this->Scratch.Local();
+    double x[3], lambda[3], normal[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      const int32_t* row = this->Table + r * this->K;
+      const int n = featurepoints::RowLength(row, this->K);
+      featurepoints::GatherRelative(this->Points, id, row, n, q.data(), x);
+      const double outward[3] = { x[0] - this->Center[0], x[1] - this->Center[1],
+        x[2] - this->Center[2] };
+      featurepoints::LocalPCA(q.data(), n, true, outward, lambda, normal);
+      const double sum = lambda[0] + lambda[1] + lambda[2];
+      this->Curvature[id] = sum > 0.0 ? static_cast<float>(lambda[0] / sum) : 0.0f;
+      double distance = 0.0;
+      for (int j = 0; j < n; ++j)
+      {
+        distance += std::sqrt(q[3 * j] * q[3 * j] + q[3 * j + 1] * q[3 * j + 1] + q[3 * j + 2] * q[3 * j + 2]);
+      }
+      // Coincident neighbours only: the density is capped rather than infinite.
+      this->Density[id] = distance > 0.0 ? static_cast<float>(n / distance) : 0.0f;
+      for (int c = 0; c < 3; ++c)
+      {
+        this->Normals[3 * id + c] = static_cast<float>(normal[c]);
+      }
+    }
+  }
+
+  void Reduce() {}
+};
+
+double MedianOf(const float* values, const std::vector<vtkIdType>& ids)
+{
+  std::vector<float> v;
+  v.reserve(ids.size());
+  for (vtkIdType id : ids)
+  {
+    v.push_back(values[id]);
+  }
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  auto mid = v.begin() + v.size() / 2;
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+} // namespace
+
+vtkCurvatureDensityFeatures::vtkCurvatureDensityFeatures()
+{
+  this->Threshold = 2.0;
+}
+
+vtkCurvatureDensityFeatures::~vtkCurvatureDensityFeatures() = default;
+
+int vtkCurvatureDensityFeatures::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  this->ResetFigures();
+  const vtkIdType n = input->GetNumberOfPoints();
+  auto newArray = [n](const char* name, int components) {
+    vtkSmartPointer<vtkFloatArray> a = vtkSmartPointer<vtkFloatArray>::New();
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    a->SetNumberOfTuples(n);
+    a->Fill(0.0);
+    return a;
+  };
+  auto normals = newArray("Normals", 3);
+  auto curvature = newArray("Curvature", 1);
+  auto angle = newArray("NormalAngle", 1);
+  auto density = newArray("Density", 1);
+  auto score = newArray("CurvatureDensity", 1);
+  vtkNew<vtkUnsignedCharArray> mask;
+  mask->SetName("FeatureMask");
+  mask->SetNumberOfValues(n);
+  mask->Fill(0);
+  auto finish = [&]() {
+    return this->AssembleOutput(
+      input, output, { normals, curvature, angle, density, score }, mask);
+  };
+
+  vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+  std::vector<vtkIdType> ids;
+  std::vector<int32_t> table;
+  const int k = this->NumberOfNeighbors;
+  if (!this->SearchAllPoints(input->GetPoints(), n, k, neighborhoods, ids, table, 0.6))
+  {
+    return finish();
+  }
+  IndicatorWorker worker{ input->GetPoints(), ids, table.data(), k, neighborhoods->GetCenter(),
+    normals->GetPointer(0), curvature->GetPointer(0), density->GetPointer(0), {} };
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), worker);
+  this->UpdateProgress(0.8);
+
+  // Pass 2: the mean angle between the point's normal and its neighbours' normals.
+  const float* nrm = normals->GetPointer(0);
+  float* theta = angle->GetPointer(0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = ids[r];
+      const int32_t* row = table.data() + r * k;
+      const int count = featurepoints::RowLength(row, k);
+      double sum = 0.0;
+      for (int j = 0; j < count; ++j)
+      {
+        const float* a = nrm + 3 * id;
+        const float* b = nrm + 3 * static_cast<vtkIdType>(row[j]);
+        const double c = std::abs(double(a[0]) * b[0] + double(a[1]) * b[1] + double(a[2]) * b[2]);
+        sum += std::acos(std::min(1.0, c));
+      }
+      theta[id] = count > 0 ? static_cast<float>(sum / count) : 0.0f;
+    }
+  });
+
+  // The score: each indicator over its median (a zero median leaves its term out).
+  const double medC = MedianOf(curvature->GetPointer(0), ids);
+  const double medT = MedianOf(theta, ids);
+  const double medD = MedianOf(density->GetPointer(0), ids);
+  const double wc = medC > 0.0 ? this->CurvatureWeight / medC : 0.0;
+  const double wt = medT > 0.0 ? this->NormalAngleWeight / medT : 0.0;
+  const double wd = medD > 0.0 ? this->DensityWeight / medD : 0.0;
+  const double total = this->CurvatureWeight + this->NormalAngleWeight + this->DensityWeight;
+  const double norm = total > 0.0 ? 1.0 / total : 0.0;
+  const float* c = curvature->GetPointer(0);
+  const float* d = density->GetPointer(0);
+  float* s = score->GetPointer(0);
+  for (vtkIdType id : ids)
+  {
+    s[id] = static_cast<float>(norm * (wc * c[id] + wt * theta[id] + wd * d[id]));
+  }
+  this->ApplyThreshold(s, ids, nullptr, nullptr, mask->GetPointer(0));
+  this->UpdateProgress(1.0);
+  return finish();
+}
+
+void vtkCurvatureDensityFeatures::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
+  os << indent << "CurvatureWeight: " << this->CurvatureWeight << "\n";
+  os << indent << "NormalAngleWeight: " << this->NormalAngleWeight << "\n";
+  os << indent << "DensityWeight: " << this->DensityWeight << "\n";
+}

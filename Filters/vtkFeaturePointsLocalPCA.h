@@ -1,0 +1,104 @@
+// Private header of FeaturePoints::Filters (not installed): the principal component analysis of
+// one point's neighbourhood, shared by the proposed method (Eq. 3's normal) and the baselines
+// (PCA surface variation, Wang & Yuan's curvature), so that every method sees the same normals.
+#ifndef vtkFeaturePointsLocalPCA_h
+#define vtkFeaturePointsLocalPCA_h
+
+#include "vtkPoints.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace featurepoints
+{
+// Number of filled entries at the head of a neighbour row (rows are padded with -1).
+inline int RowLength(const int32_t* row, int k)
+{
+  int n = 0;
+  while (n < k && row[n] >= 0)
+  {
+    ++n;
+  }
+  return n;
+}
+
+/**
+ * Coordinates of the first `count` points of `row` relative to point `id` (written to `x`), into
+ * `q` (x y z per point): working relative to the point costs no precision far from the origin.
+ */
+inline void GatherRelative(
+  vtkPoints* points, vtkIdType id, const int32_t* row, int count, double* q, double x[3])
+{
+  double y[3];
+  points->GetPoint(id, x);
+  for (int j = 0; j < count; ++j)
+  {
+    points->GetPoint(row[j], y);
+    q[3 * j] = y[0] - x[0];
+    q[3 * j + 1] = y[1] - x[1];
+    q[3 * j + 2] = y[2] - x[2];
+  }
+}
+
+/**
+ * Covariance of the first `count` points of `q` (coordinates relative to the query point, x y z
+ * per point), plus the query point itself (the origin) when `withOrigin`, about their mean;
+ * its eigenvalues, ascending, in `lambda` and the unit eigenvector of the smallest, turned to
+ * point along `outward`, in `normal`. Returns false (normal 0, lambda 0) when fewer than 3 points
+ * or a degenerate matrix leave the normal undefined.
+ */
+inline bool LocalPCA(const double* q, int count, bool withOrigin, const double outward[3],
+  double lambda[3], double normal[3])
+{
+  lambda[0] = lambda[1] = lambda[2] = 0.0;
+  normal[0] = normal[1] = normal[2] = 0.0;
+  const int m = count + (withOrigin ? 1 : 0);
+  if (m < 3)
+  {
+    return false;
+  }
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int j = 0; j < count; ++j)
+  {
+    mean += Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+  }
+  mean /= m;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (int j = 0; j < count; ++j)
+  {
+    const Eigen::Vector3d v = Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]) - mean;
+    cov += v * v.transpose();
+  }
+  if (withOrigin)
+  {
+    cov += mean * mean.transpose();
+  }
+  if (!cov.allFinite())
+  {
+    return false;
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(cov / m);
+  Eigen::Vector3d n = solver.eigenvectors().col(0);
+  if (!n.allFinite() || n.squaredNorm() == 0.0)
+  {
+    return false;
+  }
+  n.normalize();
+  if (n.dot(Eigen::Vector3d(outward[0], outward[1], outward[2])) < 0.0)
+  {
+    n = -n;
+  }
+  const Eigen::Vector3d ev = solver.eigenvalues();
+  for (int c = 0; c < 3; ++c)
+  {
+    lambda[c] = std::max(ev[c], 0.0);
+    normal[c] = n[c];
+  }
+  return true;
+}
+} // namespace featurepoints
+
+#endif
