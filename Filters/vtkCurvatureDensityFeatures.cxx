@@ -8,7 +8,6 @@
 #include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -20,53 +19,6 @@ vtkStandardNewMacro(vtkCurvatureDensityFeatures);
 
 namespace
 {
-// Pass 1: normal, curvature and density of each point.
-struct IndicatorWorker
-{
-  vtkPoints* Points;
-  const std::vector<vtkIdType>& Ids;
-  const int32_t* Table;
-  int K;
-  const double* Center;
-  float* Normals;
-  float* Curvature;
-  float* Density;
-  vtkSMPThreadLocal<std::vector<double>> Scratch;
-
-  void Initialize() { this->Scratch.Local().resize(3 * static_cast<size_t>(this->K)); }
-
-  void operator()(vtkIdType begin, vtkIdType end)
-  {
-    std::vector<double>& q = this->Scratch.Local();
-    double x[3], lambda[3], normal[3];
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const vtkIdType id = this->Ids[r];
-      const int32_t* row = this->Table + r * this->K;
-      const int n = featurepoints::RowLength(row, this->K);
-      featurepoints::GatherRelative(this->Points, id, row, n, q.data(), x);
-      const double outward[3] = { x[0] - this->Center[0], x[1] - this->Center[1],
-        x[2] - this->Center[2] };
-      featurepoints::LocalPCA(q.data(), n, true, outward, lambda, normal);
-      const double sum = lambda[0] + lambda[1] + lambda[2];
-      this->Curvature[id] = sum > 0.0 ? static_cast<float>(lambda[0] / sum) : 0.0f;
-      double distance = 0.0;
-      for (int j = 0; j < n; ++j)
-      {
-        distance += std::sqrt(q[3 * j] * q[3 * j] + q[3 * j + 1] * q[3 * j + 1] + q[3 * j + 2] * q[3 * j + 2]);
-      }
-      // Coincident neighbours only: the density is capped rather than infinite.
-      this->Density[id] = distance > 0.0 ? static_cast<float>(n / distance) : 0.0f;
-      for (int c = 0; c < 3; ++c)
-      {
-        this->Normals[3 * id + c] = static_cast<float>(normal[c]);
-      }
-    }
-  }
-
-  void Reduce() {}
-};
-
 double MedianOf(const float* values, const std::vector<vtkIdType>& ids)
 {
   std::vector<float> v;
@@ -103,23 +55,13 @@ int vtkCurvatureDensityFeatures::RequestData(
   }
   this->ResetFigures();
   const vtkIdType n = input->GetNumberOfPoints();
-  auto newArray = [n](const char* name, int components) {
-    vtkSmartPointer<vtkFloatArray> a = vtkSmartPointer<vtkFloatArray>::New();
-    a->SetName(name);
-    a->SetNumberOfComponents(components);
-    a->SetNumberOfTuples(n);
-    a->Fill(0.0);
-    return a;
-  };
-  auto normals = newArray("Normals", 3);
-  auto curvature = newArray("Curvature", 1);
-  auto angle = newArray("NormalAngle", 1);
-  auto density = newArray("Density", 1);
-  auto score = newArray("CurvatureDensity", 1);
-  vtkNew<vtkUnsignedCharArray> mask;
-  mask->SetName("FeatureMask");
-  mask->SetNumberOfValues(n);
-  mask->Fill(0);
+  using featurepoints::NewZeroArray;
+  auto normals = NewZeroArray<vtkFloatArray>("Normals", 3, n);
+  auto curvature = NewZeroArray<vtkFloatArray>("Curvature", 1, n);
+  auto angle = NewZeroArray<vtkFloatArray>("NormalAngle", 1, n);
+  auto density = NewZeroArray<vtkFloatArray>("Density", 1, n);
+  auto score = NewZeroArray<vtkFloatArray>("CurvatureDensity", 1, n);
+  auto mask = NewZeroArray<vtkUnsignedCharArray>("FeatureMask", 1, n);
   auto finish = [&]() {
     return this->AssembleOutput(
       input, output, { normals, curvature, angle, density, score }, mask);
@@ -133,8 +75,10 @@ int vtkCurvatureDensityFeatures::RequestData(
   {
     return finish();
   }
-  IndicatorWorker worker{ input->GetPoints(), ids, table.data(), k, neighborhoods->GetCenter(),
-    normals->GetPointer(0), curvature->GetPointer(0), density->GetPointer(0), {} };
+  // Pass 1: normal, curvature and density of each point.
+  featurepoints::LocalShapeWorker worker{ input->GetPoints(), ids, table.data(), k,
+    neighborhoods->GetCenter(), normals->GetPointer(0), curvature->GetPointer(0),
+    density->GetPointer(0), {} };
   vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), worker);
   this->UpdateProgress(0.8);
 

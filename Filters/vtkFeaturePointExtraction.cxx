@@ -163,17 +163,6 @@ struct ScoreWorker
   void Reduce() {}
 };
 
-template <typename ArrayT>
-vtkSmartPointer<ArrayT> NewZeroArray(const char* name, int components, vtkIdType n)
-{
-  auto a = vtkSmartPointer<ArrayT>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(components);
-  a->SetNumberOfTuples(n);
-  a->Fill(0);
-  return a;
-}
-
 } // namespace
 
 vtkFeaturePointExtraction::vtkFeaturePointExtraction() = default;
@@ -192,12 +181,12 @@ int vtkFeaturePointExtraction::RequestData(
 
   const vtkIdType n = input->GetNumberOfPoints();
   vtkPoints* points = input->GetPoints();
-  auto normals = NewZeroArray<vtkFloatArray>("Normals", 3, n);
-  auto ssi = NewZeroArray<vtkFloatArray>("SSI", 1, n);
-  auto pdi = NewZeroArray<vtkFloatArray>("PDI", 1, n);
-  auto score = NewZeroArray<vtkFloatArray>("F", 1, n);
-  auto candidate = NewZeroArray<vtkUnsignedCharArray>("Candidate", 1, n);
-  auto mask = NewZeroArray<vtkUnsignedCharArray>("FeatureMask", 1, n);
+  auto normals = featurepoints::NewZeroArray<vtkFloatArray>("Normals", 3, n);
+  auto ssi = featurepoints::NewZeroArray<vtkFloatArray>("SSI", 1, n);
+  auto pdi = featurepoints::NewZeroArray<vtkFloatArray>("PDI", 1, n);
+  auto score = featurepoints::NewZeroArray<vtkFloatArray>("F", 1, n);
+  auto candidate = featurepoints::NewZeroArray<vtkUnsignedCharArray>("Candidate", 1, n);
+  auto mask = featurepoints::NewZeroArray<vtkUnsignedCharArray>("FeatureMask", 1, n);
   // Assembles the output from whatever the arrays hold when it is called.
   auto finish = [&]() {
     return this->AssembleOutput(input, output,

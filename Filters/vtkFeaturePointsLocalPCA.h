@@ -5,6 +5,11 @@
 #define vtkFeaturePointsLocalPCA_h
 
 #include "vtkPoints.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSmartPointer.h"
+
+#include <cmath>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 
@@ -99,6 +104,73 @@ inline bool LocalPCA(const double* q, int count, bool withOrigin, const double o
   }
   return true;
 }
+/** A named array of n tuples, filled with 0: how every detector starts its output arrays. */
+template <typename ArrayT>
+vtkSmartPointer<ArrayT> NewZeroArray(const char* name, int components, vtkIdType n)
+{
+  auto a = vtkSmartPointer<ArrayT>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(n);
+  a->Fill(0);
+  return a;
+}
+
+/**
+ * vtkSMPTools functor: for each point of `Ids` (row r of `Table`, K entries), the PCA of the point
+ * and its neighbours: the normal (turned away from `Center`), the surface variation
+ * lambda0 / (lambda0 + lambda1 + lambda2), and, when `Density` is set, 1 / (mean distance to the
+ * neighbours). Shared by the baselines that use these quantities.
+ */
+struct LocalShapeWorker
+{
+  vtkPoints* Points;
+  const std::vector<vtkIdType>& Ids;
+  const int32_t* Table;
+  int K;
+  const double* Center;
+  float* Normals;
+  float* Variation;
+  float* Density; // may be null
+  vtkSMPThreadLocal<std::vector<double>> Scratch;
+
+  void Initialize() { this->Scratch.Local().resize(3 * static_cast<size_t>(this->K)); }
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    std::vector<double>& q = this->Scratch.Local();
+    double x[3], lambda[3], normal[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      const int32_t* row = this->Table + r * this->K;
+      const int n = RowLength(row, this->K);
+      GatherRelative(this->Points, id, row, n, q.data(), x);
+      const double outward[3] = { x[0] - this->Center[0], x[1] - this->Center[1],
+        x[2] - this->Center[2] };
+      LocalPCA(q.data(), n, true, outward, lambda, normal);
+      const double sum = lambda[0] + lambda[1] + lambda[2];
+      this->Variation[id] = sum > 0.0 ? static_cast<float>(lambda[0] / sum) : 0.0f;
+      for (int c = 0; c < 3; ++c)
+      {
+        this->Normals[3 * id + c] = static_cast<float>(normal[c]);
+      }
+      if (this->Density)
+      {
+        double distance = 0.0;
+        for (int j = 0; j < n; ++j)
+        {
+          distance += std::sqrt(
+            q[3 * j] * q[3 * j] + q[3 * j + 1] * q[3 * j + 1] + q[3 * j + 2] * q[3 * j + 2]);
+        }
+        // Coincident neighbours only: 0 rather than an infinite density.
+        this->Density[id] = distance > 0.0 ? static_cast<float>(n / distance) : 0.0f;
+      }
+    }
+  }
+
+  void Reduce() {}
+};
 } // namespace featurepoints
 
 #endif
