@@ -132,6 +132,23 @@ double Run(vtkFeaturePointDetector* filter, vtkPolyData* input)
   return std::chrono::duration<double>(t1 - t0).count();
 }
 
+// The figures of an evaluation as a table row (the caller names the row).
+Row FromEvaluation(vtkFeaturePointEvaluation* evaluation, double seconds)
+{
+  Row r;
+  r.Points = evaluation->GetNumberOfPoints();
+  r.Detections = evaluation->GetDetections();
+  r.Positives = evaluation->GetPositives();
+  r.Pr = evaluation->GetPr();
+  r.Pt = evaluation->GetPt();
+  r.Precision = evaluation->GetPrecision();
+  r.Recall = evaluation->GetRecall();
+  r.F1 = evaluation->GetF1();
+  r.MCC = evaluation->GetMCC();
+  r.Seconds = seconds;
+  return r;
+}
+
 Row EvaluateSynthetic(vtkFeaturePointDetector* filter, vtkPolyData* model, double seconds)
 {
   vtkNew<vtkFeaturePointEvaluation> evaluation;
@@ -142,17 +159,7 @@ Row EvaluateSynthetic(vtkFeaturePointDetector* filter, vtkPolyData* model, doubl
     std::fprintf(stderr, "error: %s\n", evaluation->GetErrorText().c_str());
     ++failures;
   }
-  Row r;
-  r.Points = model->GetNumberOfPoints();
-  r.Detections = evaluation->GetDetections();
-  r.Positives = evaluation->GetPositives();
-  r.Pr = evaluation->GetPr();
-  r.Pt = evaluation->GetPt();
-  r.Precision = evaluation->GetPrecision();
-  r.Recall = evaluation->GetRecall();
-  r.F1 = evaluation->GetF1();
-  r.MCC = evaluation->GetMCC();
-  r.Seconds = seconds;
+  Row r = FromEvaluation(evaluation, seconds);
   r.OracleF1 = OracleF1(filter->GetOutput()->GetPointData()->GetArray(filter->GetScoreArrayName()),
     model->GetPointData()->GetArray("FeatureDistance"), s);
   return r;
@@ -411,22 +418,16 @@ int main(int argc, char* argv[])
         auto filter = methods[k].Make();
         const double seconds = Run(filter, input);
         vtkNew<vtkFeaturePointEvaluation> evaluation;
-        evaluation->EvaluateLabels(
-          filter->GetOutput()->GetPointData()->GetArray("FeatureMask"), labels);
-        Row r;
+        if (!evaluation->EvaluateLabels(
+              filter->GetOutput()->GetPointData()->GetArray("FeatureMask"), labels))
+        {
+          std::fprintf(stderr, "error: %s: %s\n", name.c_str(), evaluation->GetErrorText().c_str());
+          ++failures;
+        }
+        Row r = FromEvaluation(evaluation, seconds);
         r.Section = "pcednet";
         r.Dataset = name;
         r.Method = methods[k].Name;
-        r.Points = cloud->GetNumberOfPoints();
-        r.Detections = evaluation->GetDetections();
-        r.Positives = evaluation->GetPositives();
-        r.Pr = evaluation->GetPr();
-        r.Pt = evaluation->GetPt();
-        r.Precision = evaluation->GetPrecision();
-        r.Recall = evaluation->GetRecall();
-        r.F1 = evaluation->GetF1();
-        r.MCC = evaluation->GetMCC();
-        r.Seconds = seconds;
         CheckFinite(r);
         rows.push_back(r);
         for (Values* v : { &values[k], &all[k] })
