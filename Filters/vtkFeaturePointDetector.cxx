@@ -46,6 +46,9 @@ int vtkFeaturePointDetector::FillInputPortInformation(int, vtkInformation* info)
 
 void vtkFeaturePointDetector::ResetFigures()
 {
+  this->StageNames.clear();
+  this->StageTimes.clear();
+  this->StageRunning = false;
   this->MeanSpacing = 0.0;
   this->ThresholdUsed = 0.0;
   this->NumberOfCandidates = 0;
@@ -102,6 +105,7 @@ bool vtkFeaturePointDetector::PrepareNeighborhoods(
     vtkWarningMacro("The input has no points: the output is empty.");
     return false;
   }
+  this->BeginStage("locator");
   if (!neighborhoods->Build(points))
   {
     vtkErrorMacro(<< "Cannot process the input: " << neighborhoods->GetErrorText()
@@ -153,6 +157,7 @@ bool vtkFeaturePointDetector::SearchAllPoints(vtkPoints* points, vtkIdType n, in
   {
     return false;
   }
+  this->BeginStage("neighbours");
   ids = neighborhoods->GetValidIds();
   if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.0, progressEnd))
   {
@@ -164,6 +169,7 @@ bool vtkFeaturePointDetector::SearchAllPoints(vtkPoints* points, vtkIdType n, in
     return false;
   }
   this->NumberOfCandidates = static_cast<vtkIdType>(ids.size());
+  this->BeginStage("scores");
   return !this->GetAbortExecute();
 }
 
@@ -171,6 +177,7 @@ void vtkFeaturePointDetector::ApplyThreshold(const float* score,
   const std::vector<vtkIdType>& ids, const std::vector<int>* weights,
   const unsigned char* eligible, unsigned char* mask)
 {
+  this->BeginStage("threshold");
   if (this->ThresholdMode == AUTOMATIC)
   {
     std::vector<double> scores;
@@ -206,6 +213,7 @@ void vtkFeaturePointDetector::ApplyThreshold(const float* score,
 int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* output,
   const std::vector<vtkDataArray*>& arrays, vtkUnsignedCharArray* mask)
 {
+  this->BeginStage("output");
   const vtkIdType n = input->GetNumberOfPoints();
   vtkPoints* points = input->GetPoints();
   vtkNew<vtkPolyData> full;
@@ -239,39 +247,68 @@ int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* out
   }
   else
   {
-    vtkIdType nf = 0;
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      nf += mask->GetValue(i) ? 1 : 0;
-    }
-    vtkNew<vtkPoints> kept;
-    kept->SetDataType(points ? points->GetDataType() : VTK_FLOAT);
-    kept->SetNumberOfPoints(nf);
-    vtkNew<vtkIdTypeArray> original;
-    original->SetName("vtkOriginalPointIds");
-    original->SetNumberOfValues(nf);
-    vtkPointData* outPD = output->GetPointData();
-    outPD->CopyAllocate(full->GetPointData(), nf);
-    vtkIdType j = 0;
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      if (mask->GetValue(i))
-      {
-        kept->SetPoint(j, points->GetPoint(i));
-        outPD->CopyData(full->GetPointData(), i, j);
-        original->SetValue(j, i);
-        ++j;
-      }
-    }
-    outPD->SetNumberOfTuples(nf);
-    outPD->AddArray(original);
-    outPD->SetActiveScalars(this->GetScoreArrayName());
-    output->SetPoints(kept);
-    output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(nf));
+    SelectFeaturePoints(full, mask, output);
   }
   output->GetFieldData()->AddArray(spacing);
   output->GetFieldData()->AddArray(threshold);
+  this->BeginStage(nullptr);
   return 1;
+}
+
+void vtkFeaturePointDetector::SelectFeaturePoints(
+  vtkPolyData* full, vtkUnsignedCharArray* mask, vtkPolyData* output)
+{
+  const vtkIdType n = full->GetNumberOfPoints();
+  vtkPoints* points = full->GetPoints();
+  vtkIdType nf = 0;
+  for (vtkIdType i = 0; mask && i < n; ++i)
+  {
+    nf += mask->GetValue(i) ? 1 : 0;
+  }
+  vtkNew<vtkPoints> kept;
+  kept->SetDataType(points ? points->GetDataType() : VTK_FLOAT);
+  kept->SetNumberOfPoints(nf);
+  vtkNew<vtkIdTypeArray> original;
+  original->SetName("vtkOriginalPointIds");
+  original->SetNumberOfValues(nf);
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyAllocate(full->GetPointData(), nf);
+  vtkIdType j = 0;
+  for (vtkIdType i = 0; mask && i < n; ++i)
+  {
+    if (mask->GetValue(i))
+    {
+      kept->SetPoint(j, points->GetPoint(i));
+      outPD->CopyData(full->GetPointData(), i, j);
+      original->SetValue(j, i);
+      ++j;
+    }
+  }
+  outPD->SetNumberOfTuples(nf);
+  outPD->AddArray(original);
+  if (vtkDataArray* scalars = full->GetPointData()->GetScalars())
+  {
+    outPD->SetActiveScalars(scalars->GetName());
+  }
+  output->SetPoints(kept);
+  output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(nf));
+  output->GetFieldData()->ShallowCopy(full->GetFieldData());
+}
+
+void vtkFeaturePointDetector::BeginStage(const char* name)
+{
+  const auto now = std::chrono::steady_clock::now();
+  if (this->StageRunning)
+  {
+    this->StageTimes.back() = std::chrono::duration<double>(now - this->StageStart).count();
+  }
+  this->StageRunning = name != nullptr;
+  if (name)
+  {
+    this->StageNames.emplace_back(name);
+    this->StageTimes.push_back(0.0);
+    this->StageStart = now;
+  }
 }
 
 void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned char* valid)

@@ -30,7 +30,9 @@
 #include "FeaturePointsFiltersModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <chrono>  // For stage timing
 #include <cstdint> // For int32_t
+#include <string>  // For stage names
 #include <vector>  // For AutomaticThreshold
 
 class vtkDataArray;
@@ -94,6 +96,26 @@ public:
   vtkGetMacro(NumberOfFeaturePoints, vtkIdType);
   ///@}
 
+  ///@{
+  /**
+   * Wall-clock time of each stage of the last run, in order ("locator", "spacing",
+   * "voxel filter", "neighbours", "scores", "threshold", "output"; a method reports the stages it
+   * has), in seconds.
+   */
+  int GetNumberOfStages() const { return static_cast<int>(this->StageNames.size()); }
+  const char* GetStageName(int i) const { return this->StageNames.at(i).c_str(); }
+  double GetStageTime(int i) const { return this->StageTimes.at(i); }
+  ///@}
+
+  /**
+   * The feature points of a full output (`mask` is its FeatureMask): what OutputFeaturesOnly
+   * gives, without running the filter again. `output` gets the points where the mask is set, all
+   * point arrays, `vtkOriginalPointIds` and one vertex cell per point. `full` may be `output`'s
+   * own earlier content only if it is another object.
+   */
+  static void SelectFeaturePoints(
+    vtkPolyData* full, vtkUnsignedCharArray* mask, vtkPolyData* output);
+
   /** Name of the point array the threshold applies to ("F", "SurfaceVariation", ...). */
   virtual const char* GetScoreArrayName() const = 0;
 
@@ -149,6 +171,9 @@ protected:
   int AssembleOutput(vtkPointSet* input, vtkPolyData* output,
     const std::vector<vtkDataArray*>& arrays, vtkUnsignedCharArray* mask);
 
+  // Closes the running stage (if any) and starts timing the next one; nullptr only closes.
+  void BeginStage(const char* name);
+
   // Warns when all valid points lie on a line or on a plane.
   void WarnIfDegenerate(vtkPoints* points, const unsigned char* valid);
 
@@ -161,6 +186,10 @@ protected:
   double ThresholdUsed = 0.0;
   vtkIdType NumberOfCandidates = 0;
   vtkIdType NumberOfFeaturePoints = 0;
+  std::vector<std::string> StageNames;
+  std::vector<double> StageTimes;
+  std::chrono::steady_clock::time_point StageStart;
+  bool StageRunning = false;
 
 private:
   vtkFeaturePointDetector(const vtkFeaturePointDetector&) = delete;

@@ -211,10 +211,12 @@ int vtkFeaturePointExtraction::RequestData(
   double d = 0.0;
   if (this->UseVoxelFilter)
   {
+    this->BeginStage("spacing");
     d = neighborhoods->ComputeMeanSpacing();
   }
   else
   {
+    this->BeginStage("neighbours");
     ids = neighborhoods->GetValidIds();
     if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.0, 0.6))
     {
@@ -238,6 +240,7 @@ int vtkFeaturePointExtraction::RequestData(
   bool scoreAll = !this->UseVoxelFilter;
   if (this->UseVoxelFilter)
   {
+    this->BeginStage("voxel filter");
     vtkNew<vtkVoxelDensityContrastFilter> voxels;
     voxels->SetVoxelSizeFactor(this->VoxelSizeFactor);
     voxels->SetDensityContrast(this->DensityContrast);
@@ -273,6 +276,7 @@ int vtkFeaturePointExtraction::RequestData(
       }
     }
     // One k-nearest query per scored point, for every quantity.
+    this->BeginStage("neighbours");
     if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.1, 0.7))
     {
       return finish();
@@ -281,6 +285,7 @@ int vtkFeaturePointExtraction::RequestData(
   this->NumberOfCandidates = static_cast<vtkIdType>(ids.size() - background.size());
 
   // m(j) for the candidates and for every point a candidate weighs in Eqs. 4 and 6.
+  this->BeginStage("scores");
   const double floor = MinimumMeanDistance * d;
   std::vector<double> meanDistance(n, 0.0);
   const int kd = this->DensityNeighbors;

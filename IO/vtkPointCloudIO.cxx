@@ -1,0 +1,410 @@
+#include "vtkPointCloudIO.h"
+
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkDataSetReader.h"
+#include "vtkErrorCode.h"
+#include "vtkIdTypeArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointCloudPLYReader.h"
+#include "vtkPointCloudPLYWriter.h"
+#include "vtkPointCloudTextReader.h"
+#include "vtkPointCloudTextWriter.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <functional>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
+
+vtkStandardNewMacro(vtkPointCloudIO);
+
+namespace
+{
+const char* const ReadableExtensions[] = { "ply", "vtp", "vtu", "vtk", "pts", "xyz", "txt", "csv" };
+const char* const WritableExtensions[] = { "vtp", "vtk", "ply", "csv" };
+
+// Keeps the first error an algorithm reports (the observer also keeps it off the console: the
+// caller reports it, once, as one line).
+class ErrorCatcher : public vtkCommand
+{
+public:
+  static ErrorCatcher* New() { return new ErrorCatcher; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    if (this->Message.empty())
+    {
+      this->Message = vtkPointCloudIO::MessageText(static_cast<const char*>(callData));
+    }
+  }
+  std::string Message;
+};
+
+std::string WithFile(const std::string& fileName, const std::string& message)
+{
+  // Our readers' messages already start with the file name.
+  if (message.compare(0, fileName.size(), fileName) == 0)
+  {
+    return message;
+  }
+  return fileName + ": " + message;
+}
+
+std::string Join(const char* const* begin, const char* const* end)
+{
+  std::string out;
+  for (auto it = begin; it != end; ++it)
+  {
+    out += (out.empty() ? "" : ", ") + std::string(".") + *it;
+  }
+  return out;
+}
+
+// A polydata view of any point set: the same points and point data, one vertex per point when
+// the input has no cells to show.
+vtkSmartPointer<vtkPolyData> AsPolyData(vtkPointSet* data)
+{
+  if (auto poly = vtkPolyData::SafeDownCast(data))
+  {
+    return poly;
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(data->GetPoints());
+  poly->GetPointData()->ShallowCopy(data->GetPointData());
+  const vtkIdType n = data->GetNumberOfPoints();
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(n + 1);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    offsets->SetValue(i, i);
+    connectivity->SetValue(i, i);
+  }
+  offsets->SetValue(n, n);
+  vtkNew<vtkCellArray> verts;
+  verts->SetData(offsets, connectivity);
+  poly->SetVerts(verts);
+  return poly;
+}
+
+// The temporary file being written, for RemoveTemporaryFileInProgress-style clean-up on signals.
+char TemporaryInProgress[4096] = { 0 };
+} // namespace
+
+std::string vtkPointCloudIO::GetExtension(const std::string& fileName)
+{
+  const size_t slash = fileName.find_last_of('/');
+  const size_t dot = fileName.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) ||
+    dot + 1 == fileName.size())
+  {
+    return "";
+  }
+  std::string extension = fileName.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+bool vtkPointCloudIO::CanRead(const std::string& extension)
+{
+  return std::find(std::begin(ReadableExtensions), std::end(ReadableExtensions), extension) !=
+    std::end(ReadableExtensions);
+}
+
+bool vtkPointCloudIO::CanWrite(const std::string& extension)
+{
+  return std::find(std::begin(WritableExtensions), std::end(WritableExtensions), extension) !=
+    std::end(WritableExtensions);
+}
+
+std::string vtkPointCloudIO::GetReadableExtensions()
+{
+  return Join(std::begin(ReadableExtensions), std::end(ReadableExtensions));
+}
+
+std::string vtkPointCloudIO::GetWritableExtensions()
+{
+  return Join(std::begin(WritableExtensions), std::end(WritableExtensions));
+}
+
+std::string vtkPointCloudIO::MessageText(const char* vtkMessage)
+{
+  std::string text = vtkMessage ? vtkMessage : "";
+  // vtkErrorMacro's text: "ERROR: In FILE, line N\nCLASS (ADDRESS): MESSAGE\n\n".
+  const size_t newline = text.find('\n');
+  if (text.compare(0, 3, "ERR") == 0 || text.compare(0, 4, "Warn") == 0)
+  {
+    const size_t start = text.find("): ", newline == std::string::npos ? 0 : newline);
+    if (start != std::string::npos)
+    {
+      text.erase(0, start + 3);
+    }
+  }
+  for (char& c : text)
+  {
+    c = (c == '\n' || c == '\r' || c == '\t') ? ' ' : c;
+  }
+  while (!text.empty() && text.back() == ' ')
+  {
+    text.pop_back();
+  }
+  return text;
+}
+
+vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
+  const std::string& fileName, std::string& error, vtkCommand* observer)
+{
+  error.clear();
+  const std::string extension = GetExtension(fileName);
+  struct stat info;
+  if (::stat(fileName.c_str(), &info) != 0)
+  {
+    error = fileName + ": " + std::strerror(errno);
+    return nullptr;
+  }
+  if (S_ISDIR(info.st_mode))
+  {
+    error = fileName + ": is a folder, not a file";
+    return nullptr;
+  }
+  if (!CanRead(extension))
+  {
+    error = fileName + ": cannot tell the format from the extension " +
+      (extension.empty() ? std::string("(none)") : "'." + extension + "'") +
+      "; readable: " + GetReadableExtensions();
+    return nullptr;
+  }
+  if (FILE* probe = std::fopen(fileName.c_str(), "rb"))
+  {
+    std::fclose(probe);
+  }
+  else
+  {
+    error = fileName + ": cannot open: " + std::strerror(errno);
+    return nullptr;
+  }
+  if (info.st_size == 0)
+  {
+    error = fileName + ": the file is empty";
+    return nullptr;
+  }
+
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (extension == "ply")
+  {
+    auto r = vtkSmartPointer<vtkPointCloudPLYReader>::New();
+    r->SetFileName(fileName.c_str());
+    reader = r;
+  }
+  else if (extension == "vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(fileName.c_str());
+    reader = r;
+  }
+  else if (extension == "vtu")
+  {
+    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    r->SetFileName(fileName.c_str());
+    reader = r;
+  }
+  else if (extension == "vtk")
+  {
+    auto r = vtkSmartPointer<vtkDataSetReader>::New();
+    r->SetFileName(fileName.c_str());
+    reader = r;
+  }
+  else
+  {
+    auto r = vtkSmartPointer<vtkPointCloudTextReader>::New();
+    r->SetFileName(fileName.c_str());
+    reader = r;
+  }
+  vtkNew<ErrorCatcher> catcher;
+  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
+  if (observer)
+  {
+    reader->AddObserver(vtkCommand::ProgressEvent, observer);
+  }
+  reader->Update();
+  if (!catcher->Message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    error = WithFile(fileName,
+      catcher->Message.empty()
+        ? std::string("cannot read: ") + vtkErrorCode::GetStringFromErrorCode(reader->GetErrorCode())
+        : catcher->Message);
+    return nullptr;
+  }
+  vtkDataObject* output = reader->GetOutputDataObject(0);
+  vtkPointSet* points = vtkPointSet::SafeDownCast(output);
+  if (!points)
+  {
+    error = fileName + ": holds " + (output ? output->GetClassName() : std::string("no data")) +
+      ", not a point set";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkPointSet> result;
+  result.TakeReference(points->NewInstance());
+  result->ShallowCopy(points);
+  return result;
+}
+
+std::string vtkPointCloudIO::CreateTemporaryFile(const std::string& fileName, std::string& error)
+{
+  const size_t slash = fileName.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : fileName.substr(0, slash + 1);
+  const std::string base = slash == std::string::npos ? fileName : fileName.substr(slash + 1);
+  std::vector<char> name(
+    (folder == "." ? std::string("./") : folder).size() + base.size() + 10, '\0');
+  std::snprintf(name.data(), name.size(), "%s.%s.XXXXXX",
+    (folder == "." ? std::string("./") : folder).c_str(), base.c_str());
+  const int fd = ::mkstemp(name.data());
+  if (fd < 0)
+  {
+    error = fileName + ": cannot create a file in " + (folder == "." ? "the current folder" : folder) +
+      ": " + std::strerror(errno);
+    return "";
+  }
+  // mkstemp creates the file 0600; give it the permissions of any new file.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
+  ::close(fd);
+  return name.data();
+}
+
+bool vtkPointCloudIO::CanCreate(const std::string& fileName, std::string& error)
+{
+  struct stat info;
+  if (::stat(fileName.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+  {
+    error = fileName + ": is a folder, not a file";
+    return false;
+  }
+  const std::string temporary = CreateTemporaryFile(fileName, error);
+  if (temporary.empty())
+  {
+    return false;
+  }
+  std::remove(temporary.c_str());
+  return true;
+}
+
+bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std::string& error,
+  const std::string& extensionIn, vtkCommand* observer)
+{
+  error.clear();
+  const std::string extension = extensionIn.empty() ? GetExtension(fileName) : extensionIn;
+  if (!data)
+  {
+    error = fileName + ": nothing to write";
+    return false;
+  }
+  if (!CanWrite(extension))
+  {
+    error = fileName + ": cannot write the format of the extension " +
+      (extension.empty() ? std::string("(none)") : "'." + extension + "'") +
+      "; writable: " + GetWritableExtensions();
+    return false;
+  }
+  const std::string temporary = CreateTemporaryFile(fileName, error);
+  if (temporary.empty())
+  {
+    return false;
+  }
+  std::snprintf(TemporaryInProgress, sizeof(TemporaryInProgress), "%s", temporary.c_str());
+
+  // vtkXMLWriter is not a vtkWriter: keep the algorithm and its Write().
+  vtkSmartPointer<vtkAlgorithm> writer;
+  std::function<int()> write;
+  if (extension == "vtp")
+  {
+    auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    w->SetInputData(AsPolyData(data));
+    w->SetFileName(temporary.c_str());
+    w->SetDataModeToAppended();
+    writer = w;
+    write = [w]() { return w->Write(); };
+  }
+  else if (extension == "vtk")
+  {
+    auto w = vtkSmartPointer<vtkPolyDataWriter>::New();
+    w->SetInputData(AsPolyData(data));
+    w->SetFileName(temporary.c_str());
+    w->SetFileTypeToBinary();
+    writer = w;
+    write = [w]() { return w->Write(); };
+  }
+  else if (extension == "ply")
+  {
+    auto w = vtkSmartPointer<vtkPointCloudPLYWriter>::New();
+    w->SetInputData(data);
+    w->SetFileName(temporary.c_str());
+    writer = w;
+    write = [w]() { return w->Write(); };
+  }
+  else
+  {
+    auto w = vtkSmartPointer<vtkPointCloudTextWriter>::New();
+    w->SetInputData(data);
+    w->SetFileName(temporary.c_str());
+    writer = w;
+    write = [w]() { return w->Write(); };
+  }
+  vtkNew<ErrorCatcher> catcher;
+  writer->AddObserver(vtkCommand::ErrorEvent, catcher);
+  if (observer)
+  {
+    writer->AddObserver(vtkCommand::ProgressEvent, observer);
+  }
+  const int written = write();
+  bool ok = written == 1 && catcher->Message.empty() &&
+    writer->GetErrorCode() == vtkErrorCode::NoError;
+  if (!ok)
+  {
+    std::string message = catcher->Message;
+    // The writers name the temporary file; the user knows the target.
+    const size_t at = message.find(temporary);
+    if (at != std::string::npos)
+    {
+      message.replace(at, temporary.size(), fileName);
+    }
+    error = WithFile(fileName,
+      message.empty() ? std::string("cannot write: ") +
+          vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode())
+                      : message);
+  }
+  else if (std::rename(temporary.c_str(), fileName.c_str()) != 0)
+  {
+    error = fileName + ": cannot replace the file: " + std::strerror(errno);
+    ok = false;
+  }
+  if (!ok)
+  {
+    std::remove(temporary.c_str());
+  }
+  TemporaryInProgress[0] = '\0';
+  return ok;
+}
+
+void vtkPointCloudIO::RemoveTemporaryFileInProgress()
+{
+  if (TemporaryInProgress[0])
+  {
+    ::unlink(TemporaryInProgress);
+  }
+}

@@ -1,0 +1,100 @@
+/**
+ * @class   vtkPointCloudIO
+ * @brief   Reads and writes point clouds, choosing the reader or writer by the file's extension;
+ *          every failure comes back as one line that names the file and the problem.
+ *
+ * Reading (the extension, any case):
+ * - `.ply`: vtkPointCloudPLYReader (ASCII or binary, every vertex property kept, faces skipped).
+ * - `.vtp`, `.vtu`: vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader.
+ * - `.vtk`: vtkDataSetReader (legacy VTK); the file must hold a point set.
+ * - `.pts`, `.xyz`, `.txt`, `.csv`: vtkPointCloudTextReader.
+ *
+ * Writing: `.vtp` (vtkXMLPolyDataWriter, binary, compressed), `.vtk` (vtkPolyDataWriter, binary),
+ * `.ply` (vtkPointCloudPLYWriter, binary, every numeric point array as a vertex property), `.csv`
+ * (vtkPointCloudTextWriter). Write() never leaves a partial file: it writes to a temporary file
+ * in the target's folder and renames it over the target only when the writer succeeded.
+ *
+ * @sa vtkPointCloudPLYReader vtkPointCloudPLYWriter vtkPointCloudTextReader
+ * vtkPointCloudTextWriter
+ */
+#ifndef vtkPointCloudIO_h
+#define vtkPointCloudIO_h
+
+#include "FeaturePointsIOModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For Read
+
+#include <string> // For file names and messages
+
+class vtkAlgorithm;
+class vtkCommand;
+class vtkPointSet;
+
+class FEATUREPOINTSIO_EXPORT vtkPointCloudIO : public vtkObject
+{
+public:
+  static vtkPointCloudIO* New();
+  vtkTypeMacro(vtkPointCloudIO, vtkObject);
+
+  /** The extension of a file name, lower case and without the dot ("" if there is none). */
+  static std::string GetExtension(const std::string& fileName);
+
+  ///@{
+  /** Whether an extension (as GetExtension returns it) can be read or written. */
+  static bool CanRead(const std::string& extension);
+  static bool CanWrite(const std::string& extension);
+  ///@}
+
+  ///@{
+  /** The extensions that can be read or written, as a list for messages ("ply, vtp, ..."). */
+  static std::string GetReadableExtensions();
+  static std::string GetWritableExtensions();
+  ///@}
+
+  /**
+   * Reads a point cloud. Returns nullptr and sets `error` (one line, starting with the file name)
+   * when the file is missing, unreadable, of an unknown extension, malformed or not a point set.
+   * `observer`, if given, is added to the reader for its ProgressEvent.
+   */
+  static vtkSmartPointer<vtkPointSet> Read(
+    const std::string& fileName, std::string& error, vtkCommand* observer = nullptr);
+
+  /**
+   * Writes `data` in the format of `extension` (the file name's own when empty) to a temporary
+   * file beside `fileName`, then renames it to `fileName`. Returns false and sets `error` (one
+   * line, starting with the file name) on any failure, leaving no file behind.
+   */
+  static bool Write(vtkPointSet* data, const std::string& fileName, std::string& error,
+    const std::string& extension = "", vtkCommand* observer = nullptr);
+
+  /**
+   * Whether a file can be created at `fileName` (its folder exists and is writable): checked by
+   * creating and removing a temporary file there. Sets `error` when not.
+   */
+  static bool CanCreate(const std::string& fileName, std::string& error);
+
+  /**
+   * A temporary file name beside `fileName`, created empty with the permissions a new file would
+   * get; "" (and `error` set) when none can be created.
+   */
+  static std::string CreateTemporaryFile(const std::string& fileName, std::string& error);
+
+  /**
+   * Removes the temporary file of a Write() in progress, if any. Async-signal-safe: a program's
+   * SIGINT/SIGTERM handler calls it so that an interrupted run leaves no file behind.
+   */
+  static void RemoveTemporaryFileInProgress();
+
+  /** The message of a VTK error or warning event, without its "ERROR: In file, line" preamble. */
+  static std::string MessageText(const char* vtkMessage);
+
+protected:
+  vtkPointCloudIO() = default;
+  ~vtkPointCloudIO() override = default;
+
+private:
+  vtkPointCloudIO(const vtkPointCloudIO&) = delete;
+  void operator=(const vtkPointCloudIO&) = delete;
+};
+
+#endif

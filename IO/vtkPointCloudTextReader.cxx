@@ -1,0 +1,517 @@
+#include "vtkPointCloudTextReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string_view>
+#include <vector>
+
+vtkStandardNewMacro(vtkPointCloudTextReader);
+
+namespace
+{
+// Where a column's values go: a coordinate, or component `Component` of array `Array`.
+struct ColumnTarget
+{
+  int Coordinate = -1; // 0, 1, 2 for x, y, z
+  int Array = -1;
+  int Component = 0;
+};
+
+struct ArraySpec
+{
+  std::string Name;
+  int Components = 1;
+  bool Colour = false; // unsigned char 0..255
+  std::vector<double> Values;
+};
+
+std::string Lower(std::string_view s)
+{
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+std::string_view Trim(std::string_view s)
+{
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front())))
+  {
+    s.remove_prefix(1);
+  }
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back())))
+  {
+    s.remove_suffix(1);
+  }
+  return s;
+}
+
+// The whole field must be a number; a leading '+' is accepted (strtod accepts it, from_chars not).
+bool ParseNumber(std::string_view field, double& value)
+{
+  if (!field.empty() && field.front() == '+')
+  {
+    field.remove_prefix(1);
+  }
+  if (field.empty())
+  {
+    return false;
+  }
+  const auto result = std::from_chars(field.data(), field.data() + field.size(), value);
+  return result.ec == std::errc() && result.ptr == field.data() + field.size();
+}
+
+void Split(std::string_view line, char delimiter, std::vector<std::string_view>& fields)
+{
+  fields.clear();
+  if (delimiter == ' ')
+  {
+    size_t i = 0;
+    while (i < line.size())
+    {
+      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i])))
+      {
+        ++i;
+      }
+      size_t j = i;
+      while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j])))
+      {
+        ++j;
+      }
+      if (j > i)
+      {
+        fields.push_back(line.substr(i, j - i));
+      }
+      i = j;
+    }
+    return;
+  }
+  size_t start = 0;
+  while (true)
+  {
+    const size_t end = line.find(delimiter, start);
+    fields.push_back(Trim(line.substr(start, end == std::string_view::npos ? end : end - start)));
+    if (end == std::string_view::npos)
+    {
+      break;
+    }
+    start = end + 1;
+  }
+}
+
+// Header names to column targets: x/y/z, nx/ny/nz as Normals, NAME:k as components of NAME.
+std::vector<ColumnTarget> TargetsFromHeader(
+  const std::vector<std::string>& names, std::vector<ArraySpec>& arrays, std::string& problem)
+{
+  const size_t n = names.size();
+  std::vector<ColumnTarget> targets(n);
+  int coordinateColumn[3] = { -1, -1, -1 };
+  for (size_t c = 0; c < n; ++c)
+  {
+    std::string name = Lower(names[c]);
+    while (!name.empty() && name.front() == '/') // CloudCompare writes "//X"
+    {
+      name.erase(0, 1);
+    }
+    if ((name == "x" || name == "y" || name == "z") && coordinateColumn[name[0] - 'x'] < 0)
+    {
+      coordinateColumn[name[0] - 'x'] = static_cast<int>(c);
+      targets[c].Coordinate = name[0] - 'x';
+    }
+  }
+  if (coordinateColumn[0] < 0 || coordinateColumn[1] < 0 || coordinateColumn[2] < 0)
+  {
+    problem = "the header names no x, y and z columns";
+    return {};
+  }
+  std::map<std::string, int> arrayIndex;
+  for (size_t c = 0; c < n; ++c)
+  {
+    if (targets[c].Coordinate >= 0)
+    {
+      continue;
+    }
+    std::string name = names[c];
+    int component = 0;
+    const std::string lower = Lower(name);
+    if (lower == "nx" || lower == "ny" || lower == "nz")
+    {
+      component = lower[1] - 'x';
+      name = "Normals";
+    }
+    else
+    {
+      const size_t colon = name.rfind(':');
+      int k = 0;
+      if (colon != std::string::npos && colon + 1 < name.size() &&
+        std::from_chars(name.data() + colon + 1, name.data() + name.size(), k).ptr ==
+          name.data() + name.size())
+      {
+        component = k;
+        name.erase(colon);
+      }
+    }
+    auto found = arrayIndex.find(name);
+    if (found == arrayIndex.end())
+    {
+      found = arrayIndex.emplace(name, static_cast<int>(arrays.size())).first;
+      arrays.push_back(ArraySpec{ name, 0, false, {} });
+    }
+    targets[c].Array = found->second;
+    targets[c].Component = component;
+    arrays[found->second].Components = std::max(arrays[found->second].Components, component + 1);
+  }
+  // Every component of a grouped array must have its column exactly once.
+  for (size_t a = 0; a < arrays.size(); ++a)
+  {
+    std::vector<int> seen(arrays[a].Components, 0);
+    for (const ColumnTarget& t : targets)
+    {
+      if (t.Array == static_cast<int>(a))
+      {
+        ++seen[t.Component];
+      }
+    }
+    for (int k = 0; k < arrays[a].Components; ++k)
+    {
+      if (seen[k] != 1)
+      {
+        problem = "the header's columns for '" + arrays[a].Name + "' do not give component " +
+          std::to_string(k) + " exactly once";
+        return {};
+      }
+    }
+  }
+  return targets;
+}
+
+// Columns without a header: x, y, z, then `Field 3` ...; PTS's intensity and colours.
+std::vector<ColumnTarget> TargetsByPosition(size_t n, bool pts, std::vector<ArraySpec>& arrays)
+{
+  std::vector<ColumnTarget> targets(n);
+  for (int c = 0; c < 3; ++c)
+  {
+    targets[c].Coordinate = c;
+  }
+  size_t c = 3;
+  if (pts && (n == 4 || n == 7))
+  {
+    arrays.push_back(ArraySpec{ "Intensity", 1, false, {} });
+    targets[c++].Array = static_cast<int>(arrays.size() - 1);
+  }
+  if (pts && (n == 6 || n == 7))
+  {
+    arrays.push_back(ArraySpec{ "RGB", 3, true, {} });
+    for (int k = 0; k < 3; ++k, ++c)
+    {
+      targets[c].Array = static_cast<int>(arrays.size() - 1);
+      targets[c].Component = k;
+    }
+  }
+  for (; c < n; ++c)
+  {
+    arrays.push_back(ArraySpec{ "Field " + std::to_string(c), 1, false, {} });
+    targets[c].Array = static_cast<int>(arrays.size() - 1);
+  }
+  return targets;
+}
+
+vtkSmartPointer<vtkCellArray> VertexCells(vtkIdType n)
+{
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(n + 1);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    offsets->SetValue(i, i);
+    connectivity->SetValue(i, i);
+  }
+  offsets->SetValue(n, n);
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+} // namespace
+
+vtkPointCloudTextReader::vtkPointCloudTextReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkPointCloudTextReader::~vtkPointCloudTextReader()
+{
+  this->SetFileName(nullptr);
+}
+
+int vtkPointCloudTextReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->ErrorMessage.clear();
+  this->SetErrorCode(vtkErrorCode::NoError);
+  const std::string file = this->FileName ? this->FileName : "";
+  auto fail = [&](unsigned long code, long line, const std::string& what) {
+    std::ostringstream message;
+    message << file;
+    if (line > 0)
+    {
+      message << ":" << line;
+    }
+    message << ": " << what;
+    this->ErrorMessage = message.str();
+    vtkErrorMacro(<< this->ErrorMessage);
+    this->SetErrorCode(code);
+    output->Initialize();
+    return 1;
+  };
+  if (file.empty())
+  {
+    return fail(vtkErrorCode::NoFileNameError, 0, "no file name given");
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+  {
+    return fail(vtkErrorCode::CannotOpenFileError, 0, "cannot open the file");
+  }
+  in.seekg(0, std::ios::end);
+  const double fileSize = std::max(1.0, static_cast<double>(in.tellg()));
+  in.seekg(0, std::ios::beg);
+
+  int format = this->Format;
+  if (format == AUTOMATIC)
+  {
+    const size_t dot = file.rfind('.');
+    const std::string extension = dot == std::string::npos ? "" : Lower(file.substr(dot + 1));
+    format = extension == "csv" ? CSV : extension == "pts" ? PTS : XYZ;
+  }
+  char delimiter = format == CSV ? ',' : ' ';
+
+  std::vector<ColumnTarget> targets;
+  std::vector<ArraySpec> arrays;
+  std::vector<double> xyz;
+  std::vector<std::string_view> fields;
+  std::string text;
+  long lineNumber = 0;
+  long referenceLine = 0; // the header, or the first data line: it fixes the number of fields
+  bool referenceIsHeader = false;
+  long countLine = 0;
+  long long declaredCount = -1;
+  bool first = true;
+  while (std::getline(in, text))
+  {
+    ++lineNumber;
+    std::string_view line(text);
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.remove_suffix(1);
+    }
+    const std::string_view trimmed = Trim(line);
+    if (trimmed.empty() || trimmed.front() == '#')
+    {
+      continue;
+    }
+    if (format == PTS && countLine == 0)
+    {
+      double count = 0.0;
+      if (!ParseNumber(trimmed, count) || count < 0 || count != std::floor(count))
+      {
+        return fail(vtkErrorCode::FileFormatError, lineNumber,
+          "a PTS file starts with its number of points; found '" + std::string(trimmed) + "'");
+      }
+      declaredCount = static_cast<long long>(count);
+      countLine = lineNumber;
+      continue;
+    }
+    if (first)
+    {
+      if (format == CSV && trimmed.find(',') == std::string_view::npos &&
+        trimmed.find(';') != std::string_view::npos)
+      {
+        delimiter = ';';
+      }
+      Split(trimmed, delimiter, fields);
+      bool header = false;
+      double value;
+      for (std::string_view f : fields)
+      {
+        header = header || !ParseNumber(f, value);
+      }
+      if (header)
+      {
+        std::vector<std::string> names;
+        for (std::string_view f : fields)
+        {
+          if (f.size() >= 2 && (f.front() == '"' || f.front() == '\'') && f.back() == f.front())
+          {
+            f = f.substr(1, f.size() - 2);
+          }
+          names.emplace_back(f);
+        }
+        std::string problem;
+        targets = TargetsFromHeader(names, arrays, problem);
+        if (targets.empty())
+        {
+          return fail(vtkErrorCode::FileFormatError, lineNumber, problem);
+        }
+        first = false;
+        referenceLine = lineNumber;
+        referenceIsHeader = true;
+        continue;
+      }
+      if (fields.size() < 3)
+      {
+        return fail(vtkErrorCode::FileFormatError, lineNumber,
+          "a point needs 3 coordinates; the line has " + std::to_string(fields.size()) +
+            " field(s)");
+      }
+      targets = TargetsByPosition(fields.size(), format == PTS, arrays);
+      first = false;
+      referenceLine = lineNumber;
+    }
+    else
+    {
+      Split(trimmed, delimiter, fields);
+    }
+    if (fields.size() != targets.size())
+    {
+      return fail(vtkErrorCode::FileFormatError, lineNumber,
+        std::to_string(fields.size()) + " field(s), expected " + std::to_string(targets.size()) +
+          (referenceIsHeader ? " (as in the header on line " : " (as on line ") +
+          std::to_string(referenceLine) + ")");
+    }
+    double point[3] = { 0.0, 0.0, 0.0 };
+    for (size_t c = 0; c < fields.size(); ++c)
+    {
+      double value = 0.0;
+      if (!ParseNumber(fields[c], value))
+      {
+        return fail(vtkErrorCode::FileFormatError, lineNumber,
+          "field " + std::to_string(c + 1) + " ('" + std::string(fields[c]) +
+            "') is not a number");
+      }
+      if (!std::isfinite(value))
+      {
+        return fail(vtkErrorCode::FileFormatError, lineNumber,
+          "field " + std::to_string(c + 1) + " ('" + std::string(fields[c]) +
+            "') is not a finite number");
+      }
+      const ColumnTarget& t = targets[c];
+      if (t.Coordinate >= 0)
+      {
+        point[t.Coordinate] = value;
+        continue;
+      }
+      ArraySpec& a = arrays[t.Array];
+      if (a.Colour && (value < 0.0 || value > 255.0 || value != std::floor(value)))
+      {
+        return fail(vtkErrorCode::FileFormatError, lineNumber,
+          "field " + std::to_string(c + 1) + " ('" + std::string(fields[c]) +
+            "') is not a colour value (an integer from 0 to 255)");
+      }
+      const size_t tuple = xyz.size() / 3;
+      if (a.Values.size() < (tuple + 1) * a.Components)
+      {
+        a.Values.resize((tuple + 1) * a.Components, 0.0);
+      }
+      a.Values[tuple * a.Components + t.Component] = value;
+    }
+    xyz.insert(xyz.end(), point, point + 3);
+    if ((xyz.size() / 3) % 65536 == 0)
+    {
+      this->UpdateProgress(std::min(0.99, static_cast<double>(in.tellg()) / fileSize));
+    }
+  }
+  if (in.bad())
+  {
+    return fail(vtkErrorCode::PrematureEndOfFileError, lineNumber, "read error");
+  }
+  const vtkIdType n = static_cast<vtkIdType>(xyz.size() / 3);
+  if (format == PTS && countLine == 0)
+  {
+    return fail(vtkErrorCode::FileFormatError, 0, "the file is empty (no PTS count line)");
+  }
+  if (declaredCount >= 0 && declaredCount != n)
+  {
+    return fail(vtkErrorCode::FileFormatError, countLine,
+      "the count line says " + std::to_string(declaredCount) + " points but the file has " +
+        std::to_string(n));
+  }
+  if (n == 0 && format != PTS)
+  {
+    return fail(vtkErrorCode::FileFormatError, 0, "the file holds no point");
+  }
+
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(n);
+  std::copy(xyz.begin(), xyz.end(), coordinates->GetPointer(0));
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  output->SetPoints(points);
+  for (ArraySpec& a : arrays)
+  {
+    a.Values.resize(static_cast<size_t>(n) * a.Components, 0.0);
+    vtkSmartPointer<vtkDataArray> array;
+    if (a.Colour)
+    {
+      auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      colours->SetNumberOfComponents(a.Components);
+      colours->SetNumberOfTuples(n);
+      std::transform(a.Values.begin(), a.Values.end(), colours->GetPointer(0),
+        [](double v) { return static_cast<unsigned char>(v); });
+      array = colours;
+    }
+    else
+    {
+      auto values = vtkSmartPointer<vtkDoubleArray>::New();
+      values->SetNumberOfComponents(a.Components);
+      values->SetNumberOfTuples(n);
+      std::copy(a.Values.begin(), a.Values.end(), values->GetPointer(0));
+      array = values;
+    }
+    array->SetName(a.Name.c_str());
+    std::vector<double>().swap(a.Values);
+    output->GetPointData()->AddArray(array);
+    if (a.Name == "Normals" && a.Components == 3)
+    {
+      output->GetPointData()->SetNormals(array);
+    }
+    else if (a.Colour)
+    {
+      output->GetPointData()->SetScalars(array);
+    }
+  }
+  if (this->CreateVertexCells)
+  {
+    output->SetVerts(VertexCells(n));
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkPointCloudTextReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Format: " << this->Format << "\n";
+  os << indent << "CreateVertexCells: " << this->CreateVertexCells << "\n";
+}

@@ -1,0 +1,972 @@
+// featurepoints: feature points (sharp edges, creases, corners) of a point cloud file, from the
+// shell. Reads PLY, VTP, VTU, legacy VTK, PTS, XYZ/TXT or CSV; runs the proposed method (Huang et
+// al. 2023) or one of its baselines; writes the cloud with its scores and FeatureMask as VTP, VTK,
+// PLY or CSV; optionally renders a picture offscreen. `featurepoints --help` lists every option.
+//
+// Exit codes: 0 success; 1 bad input or failure (one line naming the file and the problem);
+// 2 bad usage. A failed run leaves no output file behind and the input is never overwritten.
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkCurvatureDensityFeatures.h"
+#include "vtkFeaturePointExtraction.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkOutputWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointCloudIO.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkScalarBarActor.h"
+#include "vtkSmoothShrinkIndexFeatures.h"
+#include "vtkSurfaceVariationFeatures.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVersion.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
+
+#ifndef FEATUREPOINTS_VERSION
+#define FEATUREPOINTS_VERSION "unknown"
+#endif
+
+namespace
+{
+constexpr int ExitSuccess = 0;
+constexpr int ExitFailure = 1;
+constexpr int ExitUsage = 2;
+
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Methods and their options
+
+struct Method
+{
+  const char* Name;
+  const char* Description;
+  std::function<vtkSmartPointer<vtkFeaturePointDetector>()> Create;
+};
+
+const std::vector<Method>& Methods()
+{
+  static const std::vector<Method> methods = {
+    { "huang2023",
+      "the proposed method: SSI and PDI mixed into F, voxel density pre-filter (Huang, Chen, "
+      "Zhang, Lu 2023)",
+      [] { return vtkSmartPointer<vtkFeaturePointExtraction>::New(); } },
+    { "ssi", "baseline: Smooth Shrink Index alone (Nie 2016), score F = SSI / spacing",
+      [] { return vtkSmartPointer<vtkSmoothShrinkIndexFeatures>::New(); } },
+    { "pca", "baseline: PCA surface variation lambda0 / (lambda0 + lambda1 + lambda2)",
+      [] { return vtkSmartPointer<vtkSurfaceVariationFeatures>::New(); } },
+    { "wang-yuan", "baseline: curvature, normal angle and density (Wang & Yuan, as the paper "
+                   "describes it)",
+      [] { return vtkSmartPointer<vtkCurvatureDensityFeatures>::New(); } },
+  };
+  return methods;
+}
+
+const Method* FindMethod(const std::string& name)
+{
+  for (const Method& m : Methods())
+  {
+    if (name == m.Name)
+    {
+      return &m;
+    }
+  }
+  return nullptr;
+}
+
+// A numeric or keyword option of a filter. `Methods` lists the methods it applies to (empty: all).
+struct FilterOption
+{
+  const char* Name;
+  const char* Metavar;
+  std::vector<std::string> Methods;
+  double Min, Max;
+  bool Integer;
+  std::map<std::string, int> Keywords; // for keyword options: word -> value
+  std::function<void(vtkFeaturePointDetector*, double)> Apply;
+  std::function<double(vtkFeaturePointDetector*)> Default;
+  const char* Help;
+};
+
+vtkFeaturePointExtraction* Extraction(vtkFeaturePointDetector* f)
+{
+  return vtkFeaturePointExtraction::SafeDownCast(f);
+}
+vtkSurfaceVariationFeatures* Variation(vtkFeaturePointDetector* f)
+{
+  return vtkSurfaceVariationFeatures::SafeDownCast(f);
+}
+vtkCurvatureDensityFeatures* CurvatureDensity(vtkFeaturePointDetector* f)
+{
+  return vtkCurvatureDensityFeatures::SafeDownCast(f);
+}
+
+const std::vector<FilterOption>& FilterOptions()
+{
+  const std::vector<std::string> ours = { "huang2023", "ssi" };
+  static const std::vector<FilterOption> options = {
+    { "threshold-sigmas", "Z", {}, 0.0, 1000.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { f->SetThresholdSigmas(v); },
+      [](vtkFeaturePointDetector* f) { return f->GetThresholdSigmas(); },
+      "automatic threshold: median score + Z robust standard deviations" },
+    { "threshold", "VALUE", {}, -1e300, 1e300, false, {},
+      [](vtkFeaturePointDetector* f, double v) {
+        f->SetThresholdModeToAbsolute();
+        f->SetThreshold(v);
+      },
+      nullptr, "absolute threshold on the method's score instead of the automatic one" },
+    { "alpha", "A", ours, 0.0, 1.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetAlpha(v); },
+      [](vtkFeaturePointDetector* f) { return Extraction(f)->GetAlpha(); },
+      "alpha of Eq. 1, weight of the SSI term against the density term" },
+    { "normal-k", "K", ours, 3, 1000, true, {},
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetNormalNeighbors(int(v)); },
+      [](vtkFeaturePointDetector* f) { return double(Extraction(f)->GetNormalNeighbors()); },
+      "neighbours of the PCA normal (Eq. 3)" },
+    { "ssi-k", "K", ours, 1, 1000, true, {},
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetSSINeighbors(int(v)); },
+      [](vtkFeaturePointDetector* f) { return double(Extraction(f)->GetSSINeighbors()); },
+      "neighbours of the SSI's weighted centroid (Eq. 4)" },
+    { "density-k", "K", ours, 1, 1000, true, {},
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetDensityNeighbors(int(v)); },
+      [](vtkFeaturePointDetector* f) { return double(Extraction(f)->GetDensityNeighbors()); },
+      "neighbours of the mean distance and density index (Eqs. 7, 9)" },
+    { "center-k", "K", ours, 0, 1000, true, {},
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetCenterNeighbors(int(v)); },
+      [](vtkFeaturePointDetector* f) { return double(Extraction(f)->GetCenterNeighbors()); },
+      "neighbours of the density-weighted centre (Eq. 6)" },
+    { "ssi-center", "mean|point", ours, 0, 1, true,
+      { { "point", vtkFeaturePointExtraction::POINT },
+        { "mean", vtkFeaturePointExtraction::DENSITY_WEIGHTED_MEAN } },
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetSSICenter(int(v)); },
+      [](vtkFeaturePointDetector* f) { return double(Extraction(f)->GetSSICenter()); },
+      "SSI measured from the density-weighted mean (Eq. 6) or the point (Eq. 2)" },
+    { "gaussian-radius", "R", ours, 0.01, 1000.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetGaussianRadiusFactor(v); },
+      [](vtkFeaturePointDetector* f) { return Extraction(f)->GetGaussianRadiusFactor(); },
+      "r of Eq. 5, in mean spacings" },
+    { "voxel-filter", "on|off", ours, 0, 1, true, { { "on", 1 }, { "off", 0 } },
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetUseVoxelFilter(v != 0); },
+      [](vtkFeaturePointDetector* f) { return double(Extraction(f)->GetUseVoxelFilter()); },
+      "score only the voxel pre-filter's candidates (Section 3.2)" },
+    { "voxel-size", "BETA", ours, 0.1, 1000.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetVoxelSizeFactor(v); },
+      [](vtkFeaturePointDetector* f) { return Extraction(f)->GetVoxelSizeFactor(); },
+      "beta of Eq. 11: voxel side in mean spacings" },
+    { "density-contrast", "EPS", ours, 0.0, 1e300, false, {},
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetDensityContrast(v); },
+      [](vtkFeaturePointDetector* f) { return Extraction(f)->GetDensityContrast(); },
+      "epsilon of the voxel pre-filter: relative density excess of a candidate voxel" },
+    { "voxel-rule", "spacing|counts", ours, 0, 1, true,
+      { { "counts", 0 }, { "spacing", 1 } },
+      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetVoxelContrastRule(int(v)); },
+      [](vtkFeaturePointDetector* f) { return double(Extraction(f)->GetVoxelContrastRule()); },
+      "what the pre-filter compares: block spacing, or the paper's voxel counts" },
+    { "k", "K", { "pca", "wang-yuan" }, 3, 1000, true, {},
+      [](vtkFeaturePointDetector* f, double v) {
+        if (Variation(f))
+        {
+          Variation(f)->SetNumberOfNeighbors(int(v));
+        }
+        else
+        {
+          CurvatureDensity(f)->SetNumberOfNeighbors(int(v));
+        }
+      },
+      [](vtkFeaturePointDetector* f) {
+        return double(Variation(f) ? Variation(f)->GetNumberOfNeighbors()
+                                   : CurvatureDensity(f)->GetNumberOfNeighbors());
+      },
+      "neighbours of the baseline's local analysis" },
+    { "curvature-weight", "W", { "wang-yuan" }, 0.0, 1000.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { CurvatureDensity(f)->SetCurvatureWeight(v); },
+      [](vtkFeaturePointDetector* f) { return CurvatureDensity(f)->GetCurvatureWeight(); },
+      "weight of the curvature indicator" },
+    { "normal-angle-weight", "W", { "wang-yuan" }, 0.0, 1000.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { CurvatureDensity(f)->SetNormalAngleWeight(v); },
+      [](vtkFeaturePointDetector* f) { return CurvatureDensity(f)->GetNormalAngleWeight(); },
+      "weight of the normal angle indicator" },
+    { "density-weight", "W", { "wang-yuan" }, 0.0, 1000.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { CurvatureDensity(f)->SetDensityWeight(v); },
+      [](vtkFeaturePointDetector* f) { return CurvatureDensity(f)->GetDensityWeight(); },
+      "weight of the density indicator" },
+  };
+  return options;
+}
+
+const FilterOption* FindFilterOption(const std::string& name)
+{
+  for (const FilterOption& o : FilterOptions())
+  {
+    if (name == o.Name)
+    {
+      return &o;
+    }
+  }
+  return nullptr;
+}
+
+std::string FormatNumber(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::string DefaultText(const FilterOption& o)
+{
+  if (!o.Default)
+  {
+    return "automatic";
+  }
+  // The default of the first method the option applies to, from a filter made for the purpose,
+  // so that the help never disagrees with the library.
+  const Method* method = FindMethod(o.Methods.empty() ? "huang2023" : o.Methods.front());
+  const double v = o.Default(method->Create());
+  for (const auto& keyword : o.Keywords)
+  {
+    if (keyword.second == static_cast<int>(v))
+    {
+      return keyword.first;
+    }
+  }
+  return FormatNumber(v);
+}
+
+// Prints `text` wrapped to 78 columns, every line indented by `indent` spaces.
+void PrintWrapped(const std::string& text, int indent)
+{
+  std::istringstream words(text);
+  std::string word, line;
+  while (words >> word)
+  {
+    if (!line.empty() && indent + line.size() + 1 + word.size() > 78)
+    {
+      std::printf("%*s%s\n", indent, "", line.c_str());
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty())
+  {
+    std::printf("%*s%s\n", indent, "", line.c_str());
+  }
+}
+
+void PrintHelp()
+{
+  std::printf(
+    "Usage: featurepoints INPUT OUTPUT [options]\n"
+    "\n"
+    "Finds the feature points (sharp edges, creases, corners) of a point cloud and writes the\n"
+    "cloud with its scores and a FeatureMask array (1 for a feature point).\n"
+    "\n"
+    "INPUT   %s (PLY: ASCII or binary, any vertex\n"
+    "        properties, faces ignored; CSV/XYZ/TXT: with or without a header line)\n"
+    "OUTPUT  %s (VTP/VTK: every array; PLY: coordinates and every\n"
+    "        numeric array as vertex properties; CSV: a header line, then one line per point)\n"
+    "\n"
+    "General options:\n"
+    "  --method NAME         the method (default huang2023):\n",
+    vtkPointCloudIO::GetReadableExtensions().c_str(),
+    vtkPointCloudIO::GetWritableExtensions().c_str());
+  for (const Method& m : Methods())
+  {
+    std::printf("      %s\n", m.Name);
+    PrintWrapped(m.Description, 10);
+  }
+  std::printf(
+    "  --features-only       write only the feature points, with their ids in the input\n"
+    "                        (array vtkOriginalPointIds)\n"
+    "  --screenshot FILE.png render the result offscreen: points coloured by the score, feature\n"
+    "                        points in red (Debian's VTK needs an X display: use xvfb-run -a)\n"
+    "  --size WxH            picture size (default 1200x900)\n"
+    "  --threads N           number of threads (default: all cores)\n"
+    "  --quiet               print nothing but errors\n"
+    "  --help                this text\n"
+    "  --version             the program's and VTK's versions\n"
+    "\n"
+    "Method options (default in brackets; the methods an option applies to after it):\n");
+  for (const FilterOption& o : FilterOptions())
+  {
+    std::string methods;
+    for (const std::string& m : o.Methods)
+    {
+      methods += (methods.empty() ? "" : ", ") + m;
+    }
+    std::string range;
+    if (o.Keywords.empty() && o.Name != std::string("threshold"))
+    {
+      range = ", " + FormatNumber(o.Min) + " to " + (o.Max > 1e299 ? "any" : FormatNumber(o.Max));
+    }
+    std::printf("  --%s %s\n", o.Name, o.Metavar);
+    PrintWrapped(std::string(o.Help) + " [" + DefaultText(o) + range + "]" +
+        (methods.empty() ? "" : "; " + methods),
+      8);
+  }
+  std::printf("\n"
+              "Exit status: 0 success, 1 bad input or failure, 2 bad usage. A failed run leaves\n"
+              "no output file behind; the input is never overwritten.\n");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Messages and progress
+
+bool Quiet = false;
+
+[[noreturn]] void Fail(int code, const std::string& message)
+{
+  std::fprintf(stderr, "featurepoints: %s\n", message.c_str());
+  if (code == ExitUsage)
+  {
+    std::fprintf(stderr, "Try 'featurepoints --help'.\n");
+  }
+  std::exit(code);
+}
+
+// VTK's warnings as one line each (errors are reported by the program itself).
+class OneLineOutputWindow : public vtkOutputWindow
+{
+public:
+  static OneLineOutputWindow* New();
+  vtkTypeMacro(OneLineOutputWindow, vtkOutputWindow);
+  void DisplayText(const char* text) override
+  {
+    if (!Quiet)
+    {
+      std::fprintf(stderr, "featurepoints: %s\n", vtkPointCloudIO::MessageText(text).c_str());
+    }
+  }
+  void DisplayErrorText(const char* text) override
+  {
+    std::fprintf(stderr, "featurepoints: error: %s\n", vtkPointCloudIO::MessageText(text).c_str());
+  }
+  void DisplayWarningText(const char* text) override
+  {
+    if (!Quiet)
+    {
+      std::fprintf(
+        stderr, "featurepoints: warning: %s\n", vtkPointCloudIO::MessageText(text).c_str());
+    }
+  }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  void DisplayDebugText(const char*) override {}
+};
+vtkStandardNewMacro(OneLineOutputWindow);
+
+// A progress bar on a terminal (after the first half second), one line per stage otherwise.
+class Progress : public vtkCommand
+{
+public:
+  static Progress* New() { return new Progress; }
+  void Stage(const std::string& name)
+  {
+    this->Finish();
+    this->Name = name;
+    this->Start = Clock::now();
+    this->Fraction = 0.0;
+    if (!Quiet && !this->Terminal)
+    {
+      std::fprintf(stderr, "featurepoints: %s...\n", name.c_str());
+    }
+  }
+  void Finish()
+  {
+    if (this->Drawn)
+    {
+      std::fprintf(stderr, "\r%*s\r", 79, "");
+      this->Drawn = false;
+    }
+  }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    this->Fraction = *static_cast<double*>(callData);
+    if (Quiet || !this->Terminal || Seconds(this->RunStart) < 0.5 ||
+      std::chrono::duration<double>(Clock::now() - this->LastDraw).count() < 0.1)
+    {
+      return;
+    }
+    this->LastDraw = Clock::now();
+    constexpr int width = 40;
+    const int filled = static_cast<int>(std::clamp(this->Fraction, 0.0, 1.0) * width);
+    std::fprintf(stderr, "\r%-14.14s [%s%s] %3d%% %6.1f s", this->Name.c_str(),
+      std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(),
+      static_cast<int>(100 * std::clamp(this->Fraction, 0.0, 1.0)), Seconds(this->RunStart));
+    std::fflush(stderr);
+    this->Drawn = true;
+  }
+  bool Terminal = isatty(STDERR_FILENO) != 0;
+  Clock::time_point RunStart = Clock::now();
+
+private:
+  std::string Name;
+  Clock::time_point Start = Clock::now();
+  Clock::time_point LastDraw = Clock::now();
+  double Fraction = 0.0;
+  bool Drawn = false;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Screenshot
+
+// Temporary picture file of the run, removed on failure and on SIGINT/SIGTERM.
+char PictureTemporary[4096] = { 0 };
+
+void RemoveTemporaries(int signal)
+{
+  vtkPointCloudIO::RemoveTemporaryFileInProgress();
+  if (PictureTemporary[0])
+  {
+    ::unlink(PictureTemporary);
+  }
+  if (signal)
+  {
+    ::_exit(128 + signal);
+  }
+}
+
+// Whether this VTK renders through X and no X display is set: rendering would abort the program.
+bool NeedsMissingDisplay()
+{
+  vtkNew<vtkRenderWindow> probe;
+  const std::string kind = probe->GetClassName();
+  const char* display = std::getenv("DISPLAY");
+  return kind.find("XOpenGL") != std::string::npos && (!display || !*display);
+}
+
+// Renders the result: points coloured by the score on a blue-to-green scale up to the threshold,
+// feature points in red and larger, camera fitted to the cloud.
+bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
+  const std::string& captionText, int width, int height, const std::string& file,
+  std::string& error)
+{
+  auto* mask = vtkUnsignedCharArray::SafeDownCast(result->GetPointData()->GetArray("FeatureMask"));
+  vtkNew<vtkPoints> featurePoints;
+  featurePoints->SetDataType(result->GetPoints()->GetDataType());
+  for (vtkIdType i = 0; mask && i < result->GetNumberOfPoints(); ++i)
+  {
+    if (mask->GetValue(i))
+    {
+      featurePoints->InsertNextPoint(result->GetPoint(i));
+    }
+  }
+  vtkNew<vtkPolyData> features;
+  features->SetPoints(featurePoints);
+  vtkNew<vtkCellArray> verts;
+  for (vtkIdType i = 0; i < featurePoints->GetNumberOfPoints(); ++i)
+  {
+    verts->InsertNextCell(1, &i);
+  }
+  features->SetVerts(verts);
+
+  const double pointSize = result->GetNumberOfPoints() > 200000 ? 1.5 : 2.5;
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.667, 0.333);
+  lut->Build();
+  vtkNew<vtkPolyDataMapper> cloudMapper;
+  cloudMapper->SetInputData(result);
+  cloudMapper->SetScalarModeToUsePointFieldData();
+  cloudMapper->SelectColorArray(scoreName);
+  cloudMapper->SetLookupTable(lut);
+  cloudMapper->SetScalarRange(0.0, threshold > 0.0 ? threshold : 1.0);
+  vtkNew<vtkActor> cloudActor;
+  cloudActor->SetMapper(cloudMapper);
+  cloudActor->GetProperty()->SetPointSize(pointSize);
+  vtkNew<vtkPolyDataMapper> featureMapper;
+  featureMapper->SetInputData(features);
+  featureMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> featureActor;
+  featureActor->SetMapper(featureMapper);
+  featureActor->GetProperty()->SetColor(0.9, 0.05, 0.05);
+  featureActor->GetProperty()->SetPointSize(pointSize + 1.5);
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(lut);
+  bar->SetTitle(scoreName);
+  bar->SetNumberOfLabels(3);
+  bar->SetWidth(0.08);
+  bar->SetHeight(0.5);
+  bar->SetPosition(0.88, 0.25);
+  bar->UnconstrainedFontSizeOn();
+  for (vtkTextProperty* text : { bar->GetTitleTextProperty(), bar->GetLabelTextProperty() })
+  {
+    text->SetColor(0.1, 0.1, 0.1);
+    text->ShadowOff();
+    text->ItalicOff();
+    text->BoldOff();
+    text->SetFontSize(std::max(10, height / 45));
+  }
+  vtkNew<vtkTextActor> caption;
+  caption->SetInput(captionText.c_str());
+  caption->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+  caption->GetTextProperty()->SetFontSize(std::max(10, height / 45));
+  caption->SetDisplayPosition(10, 10);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(cloudActor);
+  renderer->AddActor(featureActor);
+  renderer->AddActor2D(bar);
+  renderer->AddActor2D(caption);
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+  renderer->GetActiveCamera()->Azimuth(35);
+  renderer->GetActiveCamera()->Elevation(25);
+  renderer->ResetCamera();
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputConnection(grab->GetOutputPort());
+  png->SetFileName(file.c_str());
+  png->Write();
+  if (png->GetErrorCode() != 0)
+  {
+    error = "cannot write the picture";
+    return false;
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Command line
+
+struct Settings
+{
+  std::string Input, Output, Screenshot;
+  std::string MethodName = "huang2023";
+  std::vector<std::pair<const FilterOption*, double>> FilterValues;
+  bool FeaturesOnly = false;
+  int Width = 1200, Height = 900;
+  int Threads = 0;
+};
+
+bool ParseNumber(const std::string& text, double& value)
+{
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end == text.c_str() + text.size() && errno == 0 &&
+    std::isfinite(value);
+}
+
+Settings ParseArguments(int argc, char* argv[])
+{
+  Settings s;
+  std::vector<std::string> positional;
+  std::vector<std::pair<std::string, std::string>> given; // option, value (for later checks)
+  for (int i = 1; i < argc; ++i)
+  {
+    std::string arg = argv[i];
+    if (arg == "--")
+    {
+      for (++i; i < argc; ++i)
+      {
+        positional.emplace_back(argv[i]);
+      }
+      break;
+    }
+    if (arg.size() < 2 || arg.compare(0, 2, "--") != 0)
+    {
+      if (arg.size() > 1 && arg[0] == '-' && arg != "-h")
+      {
+        Fail(ExitUsage, "unknown option '" + arg + "'");
+      }
+      if (arg == "-h")
+      {
+        PrintHelp();
+        std::exit(ExitSuccess);
+      }
+      positional.push_back(arg);
+      continue;
+    }
+    std::string name = arg.substr(2), value;
+    bool hasValue = false;
+    const size_t equals = name.find('=');
+    if (equals != std::string::npos)
+    {
+      value = name.substr(equals + 1);
+      name.erase(equals);
+      hasValue = true;
+    }
+    auto takeValue = [&]() {
+      if (!hasValue)
+      {
+        if (i + 1 >= argc)
+        {
+          Fail(ExitUsage, "option --" + name + " needs a value");
+        }
+        value = argv[++i];
+      }
+      return value;
+    };
+    auto noValue = [&]() {
+      if (hasValue)
+      {
+        Fail(ExitUsage, "option --" + name + " takes no value");
+      }
+    };
+    if (name == "help")
+    {
+      PrintHelp();
+      std::exit(ExitSuccess);
+    }
+    else if (name == "version")
+    {
+      std::printf("featurepoints %s (VTK %s)\n", FEATUREPOINTS_VERSION,
+        vtkVersion::GetVTKVersion());
+      std::exit(ExitSuccess);
+    }
+    else if (name == "quiet")
+    {
+      noValue();
+      Quiet = true;
+    }
+    else if (name == "features-only")
+    {
+      noValue();
+      s.FeaturesOnly = true;
+    }
+    else if (name == "method")
+    {
+      s.MethodName = takeValue();
+      if (!FindMethod(s.MethodName))
+      {
+        std::string names;
+        for (const Method& m : Methods())
+        {
+          names += (names.empty() ? "" : ", ") + std::string(m.Name);
+        }
+        Fail(ExitUsage, "unknown method '" + s.MethodName + "' (methods: " + names + ")");
+      }
+    }
+    else if (name == "screenshot")
+    {
+      s.Screenshot = takeValue();
+      if (vtkPointCloudIO::GetExtension(s.Screenshot) != "png")
+      {
+        Fail(ExitUsage, "--screenshot writes a PNG file: '" + s.Screenshot +
+            "' does not end in .png");
+      }
+    }
+    else if (name == "size")
+    {
+      const std::string v = takeValue();
+      int w = 0, h = 0;
+      char extra = 0;
+      if (std::sscanf(v.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 16 || h < 16 ||
+        w > 8192 || h > 8192)
+      {
+        Fail(ExitUsage, "--size takes WIDTHxHEIGHT in pixels, each from 16 to 8192; got '" + v + "'");
+      }
+      s.Width = w;
+      s.Height = h;
+    }
+    else if (name == "threads")
+    {
+      const std::string v = takeValue();
+      double n = 0;
+      if (!ParseNumber(v, n) || n < 1 || n > 4096 || n != std::floor(n))
+      {
+        Fail(ExitUsage, "--threads takes a whole number from 1 to 4096; got '" + v + "'");
+      }
+      s.Threads = static_cast<int>(n);
+    }
+    else if (const FilterOption* o = FindFilterOption(name))
+    {
+      const std::string v = takeValue();
+      double number = 0.0;
+      if (!o->Keywords.empty())
+      {
+        const auto k = o->Keywords.find(v);
+        if (k == o->Keywords.end())
+        {
+          Fail(ExitUsage, "--" + name + " takes " + o->Metavar + "; got '" + v + "'");
+        }
+        number = k->second;
+      }
+      else if (!ParseNumber(v, number))
+      {
+        Fail(ExitUsage, "--" + name + " takes a number; got '" + v + "'");
+      }
+      else if (number < o->Min || number > o->Max || (o->Integer && number != std::floor(number)))
+      {
+        Fail(ExitUsage, "--" + name + " " + v + " is out of range: " +
+            (o->Integer ? "a whole number" : "a number") + " from " + FormatNumber(o->Min) +
+            " to " + (o->Max > 1e299 ? std::string("any") : FormatNumber(o->Max)));
+      }
+      s.FilterValues.emplace_back(o, number);
+    }
+    else
+    {
+      Fail(ExitUsage, "unknown option '--" + name + "'");
+    }
+  }
+  if (positional.size() != 2)
+  {
+    Fail(ExitUsage, positional.size() < 2 ? "INPUT and OUTPUT files are needed"
+                                          : "too many arguments: '" + positional[2] + "'");
+  }
+  s.Input = positional[0];
+  s.Output = positional[1];
+  for (const auto& value : s.FilterValues)
+  {
+    const auto& methods = value.first->Methods;
+    if (!methods.empty() &&
+      std::find(methods.begin(), methods.end(), s.MethodName) == methods.end())
+    {
+      Fail(ExitUsage, std::string("option --") + value.first->Name +
+          " does not apply to --method " + s.MethodName);
+    }
+  }
+  return s;
+}
+
+bool SameFile(const std::string& a, const std::string& b)
+{
+  struct stat sa, sb;
+  return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+    sa.st_ino == sb.st_ino;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  vtkNew<OneLineOutputWindow> messages;
+  vtkOutputWindow::SetInstance(messages);
+  const Settings s = ParseArguments(argc, argv);
+
+  // What the command line alone decides: formats, and files that must not be overwritten.
+  const std::string inExt = vtkPointCloudIO::GetExtension(s.Input);
+  const std::string outExt = vtkPointCloudIO::GetExtension(s.Output);
+  if (!vtkPointCloudIO::CanRead(inExt))
+  {
+    Fail(ExitUsage, s.Input + ": cannot tell the input format from the extension " +
+        (inExt.empty() ? std::string("(none)") : "'." + inExt + "'") +
+        "; readable: " + vtkPointCloudIO::GetReadableExtensions());
+  }
+  if (!vtkPointCloudIO::CanWrite(outExt))
+  {
+    Fail(ExitUsage, s.Output + ": cannot tell the output format from the extension " +
+        (outExt.empty() ? std::string("(none)") : "'." + outExt + "'") +
+        "; writable: " + vtkPointCloudIO::GetWritableExtensions());
+  }
+  if (SameFile(s.Input, s.Output) || s.Input == s.Output)
+  {
+    Fail(ExitUsage, s.Output + ": is the input file; the input is never overwritten");
+  }
+  if (!s.Screenshot.empty() &&
+    (SameFile(s.Screenshot, s.Input) || SameFile(s.Screenshot, s.Output) ||
+      s.Screenshot == s.Input || s.Screenshot == s.Output))
+  {
+    Fail(ExitUsage, s.Screenshot + ": the picture cannot replace the input or the output");
+  }
+  // Fail before the work, not after it: unwritable targets, no display to render with.
+  std::string error;
+  if (!vtkPointCloudIO::CanCreate(s.Output, error) ||
+    (!s.Screenshot.empty() && !vtkPointCloudIO::CanCreate(s.Screenshot, error)))
+  {
+    Fail(ExitFailure, error);
+  }
+  if (!s.Screenshot.empty() && NeedsMissingDisplay())
+  {
+    Fail(ExitFailure, s.Screenshot + ": cannot render: this VTK renders through X and no "
+                                     "display is set (run under xvfb-run -a)");
+  }
+  std::signal(SIGINT, RemoveTemporaries);
+  std::signal(SIGTERM, RemoveTemporaries);
+  if (s.Threads > 0)
+  {
+    vtkSMPTools::Initialize(s.Threads);
+  }
+
+  vtkNew<Progress> progress;
+  const auto runStart = Clock::now();
+  std::vector<std::pair<std::string, double>> times;
+
+  // Read.
+  progress->Stage("reading");
+  auto start = Clock::now();
+  vtkSmartPointer<vtkPointSet> cloud = vtkPointCloudIO::Read(s.Input, error, progress);
+  progress->Finish();
+  if (!cloud)
+  {
+    Fail(ExitFailure, error);
+  }
+  times.emplace_back("read", Seconds(start));
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  if (n == 0)
+  {
+    Fail(ExitFailure, s.Input + ": the file holds no point");
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    cloud->GetPoint(i, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      std::ostringstream m;
+      m << s.Input << ": point " << i << " (counting from 0) has a non-finite coordinate (" << x[0]
+        << ", " << x[1] << ", " << x[2] << ")";
+      Fail(ExitFailure, m.str());
+    }
+  }
+
+  // Extract.
+  const Method* method = FindMethod(s.MethodName);
+  vtkSmartPointer<vtkFeaturePointDetector> filter = method->Create();
+  for (const auto& value : s.FilterValues)
+  {
+    value.first->Apply(filter, value.second);
+  }
+  filter->SetOutputFeaturesOnly(false); // the picture needs every point; --features-only below
+  filter->SetInputData(cloud);
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
+  struct ErrorFlag : vtkCommand
+  {
+    static ErrorFlag* New() { return new ErrorFlag; }
+    void Execute(vtkObject*, unsigned long, void* data) override
+    {
+      if (this->Message.empty())
+      {
+        this->Message = vtkPointCloudIO::MessageText(static_cast<const char*>(data));
+      }
+    }
+    std::string Message;
+  };
+  vtkNew<ErrorFlag> filterError;
+  filter->AddObserver(vtkCommand::ErrorEvent, filterError);
+  progress->Stage("extracting");
+  start = Clock::now();
+  filter->Update();
+  progress->Finish();
+  times.emplace_back("extract", Seconds(start));
+  if (!filterError->Message.empty())
+  {
+    Fail(ExitFailure, s.Input + ": " + filterError->Message);
+  }
+  vtkPolyData* result = filter->GetOutput();
+
+  // Picture (into a temporary file: renamed only once the output is written too).
+  std::string pictureTemporary;
+  if (!s.Screenshot.empty())
+  {
+    progress->Stage("rendering");
+    start = Clock::now();
+    pictureTemporary = vtkPointCloudIO::CreateTemporaryFile(s.Screenshot, error);
+    if (pictureTemporary.empty())
+    {
+      Fail(ExitFailure, error);
+    }
+    std::snprintf(PictureTemporary, sizeof(PictureTemporary), "%s", pictureTemporary.c_str());
+    std::ostringstream caption;
+    caption << method->Name << ": " << filter->GetNumberOfFeaturePoints()
+            << " feature points (red) of " << n << ", " << filter->GetScoreArrayName() << " > "
+            << std::setprecision(4) << filter->GetThresholdUsed();
+    if (!RenderPicture(result, filter->GetScoreArrayName(), filter->GetThresholdUsed(),
+          caption.str(), s.Width, s.Height, pictureTemporary, error))
+    {
+      RemoveTemporaries(0);
+      Fail(ExitFailure, s.Screenshot + ": " + error);
+    }
+    times.emplace_back("render", Seconds(start));
+  }
+
+  // Write: only the feature points if asked, with their ids in the input.
+  vtkSmartPointer<vtkPolyData> written = result;
+  if (s.FeaturesOnly)
+  {
+    written = vtkSmartPointer<vtkPolyData>::New();
+    vtkFeaturePointDetector::SelectFeaturePoints(result,
+      vtkUnsignedCharArray::SafeDownCast(result->GetPointData()->GetArray("FeatureMask")),
+      written);
+  }
+  progress->Stage("writing");
+  start = Clock::now();
+  if (!vtkPointCloudIO::Write(written, s.Output, error, "", progress))
+  {
+    progress->Finish();
+    RemoveTemporaries(0);
+    Fail(ExitFailure, error);
+  }
+  progress->Finish();
+  times.emplace_back("write", Seconds(start));
+  if (!pictureTemporary.empty() && std::rename(pictureTemporary.c_str(), s.Screenshot.c_str()) != 0)
+  {
+    RemoveTemporaries(0);
+    Fail(ExitFailure, s.Screenshot + ": cannot write: " + std::strerror(errno));
+  }
+  PictureTemporary[0] = '\0';
+
+  if (!Quiet)
+  {
+    const vtkIdType features = filter->GetNumberOfFeaturePoints();
+    std::printf("input       %s: %lld points\n", s.Input.c_str(), static_cast<long long>(n));
+    std::printf("method      %s, mean spacing %.6g\n", method->Name, filter->GetMeanSpacing());
+    std::printf("threshold   %s > %.6g (%s)\n", filter->GetScoreArrayName(),
+      filter->GetThresholdUsed(),
+      filter->GetThresholdMode() == vtkFeaturePointDetector::AUTOMATIC
+        ? (FormatNumber(filter->GetThresholdSigmas()) + " robust standard deviations above the "
+                                                        "median")
+            .c_str()
+        : "absolute");
+    std::printf("candidates  %lld of %lld points scored\n",
+      static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n));
+    std::printf("features    %lld (%.2f %%)\n", static_cast<long long>(features),
+      100.0 * features / std::max<vtkIdType>(n, 1));
+    std::printf("output      %s%s\n", s.Output.c_str(), s.FeaturesOnly ? " (feature points only)" : "");
+    if (!s.Screenshot.empty())
+    {
+      std::printf("picture     %s (%dx%d)\n", s.Screenshot.c_str(), s.Width, s.Height);
+    }
+    std::string stages;
+    for (int i = 0; i < filter->GetNumberOfStages(); ++i)
+    {
+      char line[96];
+      std::snprintf(line, sizeof(line), "%s%s %.3f", i ? ", " : "", filter->GetStageName(i),
+        filter->GetStageTime(i));
+      stages += line;
+    }
+    std::printf("time (s)    ");
+    for (size_t i = 0; i < times.size(); ++i)
+    {
+      std::printf("%s%s %.3f", i ? ", " : "", times[i].first.c_str(), times[i].second);
+    }
+    std::printf("; total %.3f\n", Seconds(runStart));
+    std::printf("extract (s) %s\n", stages.c_str());
+  }
+  return ExitSuccess;
+}
