@@ -4,6 +4,7 @@
 #include "vtkCommand.h"
 #include "vtkDataSetReader.h"
 #include "vtkErrorCode.h"
+#include "vtkExecutive.h"
 #include "vtkIdTypeArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointCloudPLYReader.h"
@@ -240,13 +241,15 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   {
     reader->AddObserver(vtkCommand::ProgressEvent, observer);
   }
-  reader->Update();
-  if (!catcher->Message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
+  const int updated = reader->GetExecutive()->Update();
+  if (!updated || !catcher->Message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
+    const unsigned long code = reader->GetErrorCode();
     error = WithFile(fileName,
-      catcher->Message.empty()
-        ? std::string("cannot read: ") + vtkErrorCode::GetStringFromErrorCode(reader->GetErrorCode())
-        : catcher->Message);
+      !catcher->Message.empty() ? catcher->Message
+        : code != vtkErrorCode::NoError
+        ? std::string("cannot read: ") + vtkErrorCode::GetStringFromErrorCode(code)
+        : std::string("cannot read: not a valid ." + extension + " file"));
     return nullptr;
   }
   vtkDataObject* output = reader->GetOutputDataObject(0);

@@ -349,11 +349,12 @@ int vtkPointCloudTextReader::RequestData(
         delimiter = ';';
       }
       Split(trimmed, delimiter, fields);
-      bool header = false;
+      // A header has no number at all: a line with some numbers is data, with a bad field.
+      bool header = true;
       double value;
       for (std::string_view f : fields)
       {
-        header = header || !ParseNumber(f, value);
+        header = header && !ParseNumber(f, value);
       }
       if (header)
       {

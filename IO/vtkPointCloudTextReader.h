@@ -6,7 +6,7 @@
  * One point per line; the first three columns are x, y, z unless a header names them. Every
  * other column becomes a point-data array, so nothing in the file is lost:
  *
- * - Header: the first non-comment line is a header when one of its fields is not a number. A
+ * - Header: the first non-comment line is a header when none of its fields is a number. A
  *   header's `x`, `y`, `z` columns (any case, CloudCompare's `//X` too) are the coordinates;
  *   `nx`, `ny`, `nz` become `Normals` (active normals); columns `NAME:0` ... `NAME:<k-1>`
  *   (as vtkPointCloudTextWriter and vtkDelimitedTextWriter write them) become one k-component

@@ -1,0 +1,386 @@
+// The featurepoints command, run as a user runs it (a child process), checked against the
+// library called from C++:
+//
+//   TestFeaturePointsCLI PROGRAM FOLDER               results, formats, every bad input
+//   TestFeaturePointsCLI PROGRAM FOLDER BASELINE.png  --screenshot against a baseline picture
+//                                                     (needs a display: run under xvfb-run)
+//
+// Every bad input must give its exit code (1 bad input or failure, 2 bad usage), a one-line
+// message naming the file and the problem, and leave no output file (nor a temporary one).
+#include "vtkFeatureModelSource.h"
+#include "vtkFeaturePointExtraction.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
+#include "vtkImageDifference.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPointCloudIO.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSurfaceVariationFeatures.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace
+{
+int Failures = 0;
+std::string Program, Folder;
+
+void Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::printf("FAILED: %s\n", what.c_str());
+    ++Failures;
+  }
+}
+
+bool Exists(const std::string& path)
+{
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0;
+}
+
+std::string Slurp(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::set<std::string> Entries()
+{
+  std::set<std::string> names;
+  if (DIR* d = ::opendir(Folder.c_str()))
+  {
+    while (dirent* e = ::readdir(d))
+    {
+      names.insert(e->d_name);
+    }
+    ::closedir(d);
+  }
+  return names;
+}
+
+struct Run
+{
+  int Code = -1;
+  std::string Out, Err;
+};
+
+// Runs the program with these arguments; stdout and stderr are captured (not a terminal, so
+// progress comes as plain lines).
+Run Execute(const std::vector<std::string>& arguments)
+{
+  std::vector<std::string> all = { Program };
+  all.insert(all.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& a : all)
+  {
+    argv.push_back(&a[0]);
+  }
+  argv.push_back(nullptr);
+  const std::string out = Folder + "/stdout.txt", err = Folder + "/stderr.txt";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  Run run;
+  pid_t pid = 0;
+  if (posix_spawn(&pid, Program.c_str(), &actions, nullptr, argv.data(), environ) == 0)
+  {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    run.Code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  posix_spawn_file_actions_destroy(&actions);
+  run.Out = Slurp(out);
+  run.Err = Slurp(err);
+  ::unlink(out.c_str());
+  ::unlink(err.c_str());
+  return run;
+}
+
+std::string Path(const std::string& name)
+{
+  return Folder + "/" + name;
+}
+
+// A bad run: its code, its message (one "featurepoints: ..." line holding `expected`), no output.
+void ExpectFailure(const std::string& what, const std::vector<std::string>& arguments, int code,
+  const std::string& expected, const std::string& output)
+{
+  const std::set<std::string> before = Entries();
+  const Run run = Execute(arguments);
+  Check(run.Code == code,
+    what + ": exit code " + std::to_string(run.Code) + ", expected " + std::to_string(code));
+  Check(run.Err.find("featurepoints: " ) != std::string::npos && run.Err.find(expected) != std::string::npos,
+    what + ": stderr lacks '" + expected + "': " + run.Err);
+  // The message is the last "featurepoints:" line before the usage hint, and it is one line.
+  Check(run.Err.find("ERROR: In") == std::string::npos && run.Err.find("vtkExecutive") == std::string::npos,
+    what + ": VTK's raw error text leaked: " + run.Err);
+  Check(output.empty() || !Exists(output), what + ": output file left behind: " + output);
+  std::set<std::string> after = Entries();
+  Check(after == before, what + ": files created by a failed run");
+}
+
+vtkSmartPointer<vtkPolyData> ModelCloud(int model, vtkIdType n)
+{
+  vtkNew<vtkFeatureModelSource> source;
+  source->SetModel(model);
+  source->SetNumberOfPoints(n);
+  source->Update();
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(source->GetOutput()->GetPoints());
+  return cloud;
+}
+
+vtkUnsignedCharArray* MaskOf(vtkPointSet* data)
+{
+  return data ? vtkUnsignedCharArray::SafeDownCast(data->GetPointData()->GetArray("FeatureMask"))
+              : nullptr;
+}
+
+// The CLI's mask read from `output` equals the filter's mask on the same file's cloud.
+void CheckSameMask(const std::string& what, vtkFeaturePointDetector* filter,
+  const std::string& input, const std::string& output)
+{
+  std::string error;
+  vtkSmartPointer<vtkPointSet> cloud = vtkPointCloudIO::Read(input, error);
+  vtkSmartPointer<vtkPointSet> result = vtkPointCloudIO::Read(output, error);
+  if (!cloud || !result)
+  {
+    Check(false, what + ": cannot read back: " + error);
+    return;
+  }
+  filter->SetInputData(cloud);
+  filter->Update();
+  vtkUnsignedCharArray* expected = MaskOf(filter->GetOutput());
+  vtkDataArray* got = result->GetPointData()->GetArray("FeatureMask");
+  Check(got && got->GetNumberOfTuples() == expected->GetNumberOfTuples(),
+    what + ": FeatureMask with one value per point");
+  long differences = 0, features = 0;
+  for (vtkIdType i = 0; got && i < expected->GetNumberOfTuples() && i < got->GetNumberOfTuples(); ++i)
+  {
+    differences += expected->GetValue(i) != got->GetComponent(i, 0);
+    features += expected->GetValue(i);
+  }
+  Check(differences == 0, what + ": " + std::to_string(differences) + " mask differences");
+  Check(features > 50, what + ": the cloud has feature points (" + std::to_string(features) + ")");
+  std::printf("%s: %ld feature points of %lld, same mask as the library\n", what.c_str(), features,
+    static_cast<long long>(expected->GetNumberOfTuples()));
+}
+
+int Screenshot(const std::string& baseline)
+{
+  std::string error;
+  const std::string input = Path("screenshot_input.ply");
+  const std::string output = Path("screenshot_output.vtp");
+  const std::string picture = Path("TestFeaturePointsCLIScreenshot.png");
+  Check(vtkPointCloudIO::Write(ModelCloud(vtkFeatureModelSource::MODEL_I, 30000), input, error),
+    "write the input: " + error);
+  const Run run = Execute({ input, output, "--screenshot", picture, "--size", "640x480" });
+  Check(run.Code == 0, "--screenshot run: exit code " + std::to_string(run.Code) + ": " + run.Err);
+  Check(Exists(picture), "--screenshot wrote no picture");
+  if (!Exists(baseline))
+  {
+    std::printf("FAILED: no baseline %s; the picture is %s\n", baseline.c_str(), picture.c_str());
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkPNGReader> test, valid;
+  test->SetFileName(picture.c_str());
+  valid->SetFileName(baseline.c_str());
+  vtkNew<vtkImageDifference> difference;
+  difference->SetInputConnection(test->GetOutputPort());
+  difference->SetImageConnection(valid->GetOutputPort());
+  difference->Update();
+  const double error2 = difference->GetThresholdedError();
+  int dims[3];
+  test->GetOutput()->GetDimensions(dims);
+  std::printf("screenshot %dx%d, thresholded error %.3f against %s\n", dims[0], dims[1], error2,
+    baseline.c_str());
+  Check(dims[0] == 640 && dims[1] == 480, "picture size 640x480");
+  Check(error2 <= 10.0, "picture differs from the baseline (thresholded error " +
+      std::to_string(error2) + " > 10); the picture is " + picture);
+  std::printf("%d failure(s)\n", Failures);
+  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc < 3)
+  {
+    std::printf("usage: TestFeaturePointsCLI PROGRAM FOLDER [BASELINE.png]\n");
+    return EXIT_FAILURE;
+  }
+  Program = argv[1];
+  Folder = argv[2];
+  ::mkdir(Folder.c_str(), 0755);
+  if (argc > 3)
+  {
+    return Screenshot(argv[3]);
+  }
+  std::string error;
+
+  // --help lists every option with its default; --version names the program.
+  {
+    const Run help = Execute({ "--help" });
+    Check(help.Code == 0, "--help exit code");
+    for (const char* option : { "--method", "--features-only", "--screenshot", "--size",
+           "--threads", "--quiet", "--version", "--alpha", "--normal-k", "--ssi-k", "--density-k",
+           "--center-k", "--ssi-center", "--gaussian-radius", "--voxel-filter", "--voxel-size",
+           "--density-contrast", "--voxel-rule", "--threshold", "--threshold-sigmas", "--k",
+           "huang2023", "pca", "wang-yuan", "[0.75", "[15, 3 to 1000]" })
+    {
+      Check(help.Out.find(option) != std::string::npos, std::string("--help lacks ") + option);
+    }
+    const Run version = Execute({ "--version" });
+    Check(version.Code == 0 && version.Out.find("featurepoints ") == 0, "--version: " + version.Out);
+  }
+
+  // Same mask as the library, through several formats and methods.
+  const std::string vtp = Path("model.vtp"), ply = Path("model.ply"), csv = Path("model.csv");
+  vtkSmartPointer<vtkPolyData> cloud = ModelCloud(vtkFeatureModelSource::MODEL_I, 20000);
+  Check(vtkPointCloudIO::Write(cloud, vtp, error), "write model.vtp: " + error);
+  Check(vtkPointCloudIO::Write(cloud, ply, error), "write model.ply: " + error);
+  Check(vtkPointCloudIO::Write(cloud, csv, error), "write model.csv: " + error);
+  {
+    const Run run = Execute({ vtp, Path("out.vtp") });
+    Check(run.Code == 0, "vtp -> vtp: exit code " + std::to_string(run.Code) + ": " + run.Err);
+    Check(run.Out.find("features") != std::string::npos &&
+        run.Out.find("candidates") != std::string::npos && run.Out.find("time (s)") != std::string::npos,
+      "summary lines: " + run.Out);
+    vtkNew<vtkFeaturePointExtraction> filter;
+    CheckSameMask("vtp -> vtp", filter, vtp, Path("out.vtp"));
+  }
+  {
+    const Run run = Execute({ ply, Path("out.csv"), "--threads", "1", "--quiet" });
+    Check(run.Code == 0 && run.Out.empty() && run.Err.empty(),
+      "ply -> csv --quiet: code " + std::to_string(run.Code) + ", output '" + run.Out + run.Err + "'");
+    vtkNew<vtkFeaturePointExtraction> filter;
+    CheckSameMask("ply -> csv, 1 thread", filter, ply, Path("out.csv"));
+  }
+  {
+    const Run run = Execute({ csv, Path("out.ply"), "--alpha", "0.9", "--voxel-filter", "off",
+      "--threshold-sigmas", "4" });
+    Check(run.Code == 0, "csv -> ply with options: " + run.Err);
+    vtkNew<vtkFeaturePointExtraction> filter;
+    filter->SetAlpha(0.9);
+    filter->UseVoxelFilterOff();
+    filter->SetThresholdSigmas(4);
+    CheckSameMask("csv -> ply, --alpha 0.9 --voxel-filter off --threshold-sigmas 4", filter, csv,
+      Path("out.ply"));
+  }
+  {
+    const Run run = Execute({ vtp, Path("pca.vtk"), "--method", "pca", "--k", "20" });
+    Check(run.Code == 0, "--method pca: " + run.Err);
+    vtkNew<vtkSurfaceVariationFeatures> filter;
+    filter->SetNumberOfNeighbors(20);
+    CheckSameMask("vtp -> vtk, --method pca --k 20", filter, vtp, Path("pca.vtk"));
+  }
+  // --features-only: the feature points, their ids in the input.
+  {
+    const Run run = Execute({ vtp, Path("features.vtp"), "--features-only" });
+    Check(run.Code == 0, "--features-only: " + run.Err);
+    vtkSmartPointer<vtkPointSet> all = vtkPointCloudIO::Read(Path("out.vtp"), error);
+    vtkSmartPointer<vtkPointSet> only = vtkPointCloudIO::Read(Path("features.vtp"), error);
+    auto* ids = only ? vtkIdTypeArray::SafeDownCast(
+                         only->GetPointData()->GetArray("vtkOriginalPointIds"))
+                     : nullptr;
+    vtkUnsignedCharArray* mask = MaskOf(all);
+    long selected = 0;
+    for (vtkIdType i = 0; mask && i < mask->GetNumberOfTuples(); ++i)
+    {
+      selected += mask->GetValue(i);
+    }
+    bool consistent = ids && only->GetNumberOfPoints() == selected;
+    for (vtkIdType j = 0; consistent && j < only->GetNumberOfPoints(); ++j)
+    {
+      const vtkIdType i = ids->GetValue(j);
+      double a[3], b[3];
+      all->GetPoint(i, a);
+      only->GetPoint(j, b);
+      consistent = mask->GetValue(i) == 1 && a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+    }
+    Check(consistent, "--features-only: the feature points, each with its id in the input");
+  }
+
+  // Bad usage: exit code 2.
+  ExpectFailure("no arguments", {}, 2, "INPUT and OUTPUT files are needed", "");
+  ExpectFailure("unknown option", { vtp, Path("o1.vtp"), "--bogus" }, 2,
+    "unknown option '--bogus'", Path("o1.vtp"));
+  ExpectFailure("out-of-range parameter", { vtp, Path("o2.vtp"), "--alpha", "1.5" }, 2,
+    "--alpha 1.5 is out of range", Path("o2.vtp"));
+  ExpectFailure("non-numeric parameter", { vtp, Path("o3.vtp"), "--normal-k", "ten" }, 2,
+    "--normal-k takes a number", Path("o3.vtp"));
+  ExpectFailure("fractional count", { vtp, Path("o4.vtp"), "--ssi-k", "2.5" }, 2,
+    "--ssi-k 2.5 is out of range: a whole number", Path("o4.vtp"));
+  ExpectFailure("option of another method", { vtp, Path("o5.vtp"), "--method", "pca", "--alpha", "1" },
+    2, "option --alpha does not apply to --method pca", Path("o5.vtp"));
+  ExpectFailure("unknown method", { vtp, Path("o6.vtp"), "--method", "magic" }, 2,
+    "unknown method 'magic'", Path("o6.vtp"));
+  ExpectFailure("unknown input extension", { Path("model.foo"), Path("o7.vtp") }, 2,
+    "model.foo: cannot tell the input format from the extension '.foo'", Path("o7.vtp"));
+  ExpectFailure("unknown output extension", { vtp, Path("o8.obj") }, 2,
+    "o8.obj: cannot tell the output format from the extension '.obj'", Path("o8.obj"));
+  {
+    const std::string before = Slurp(vtp);
+    ExpectFailure("output is the input", { vtp, Folder + "/./model.vtp" }, 2,
+      "is the input file; the input is never overwritten", "");
+    Check(Slurp(vtp) == before, "the input is unchanged");
+  }
+
+  // Bad input or failure: exit code 1.
+  ExpectFailure("missing file", { Path("missing.ply"), Path("o9.vtp") }, 1,
+    "missing.ply: No such file or directory", Path("o9.vtp"));
+  std::ofstream(Path("empty.xyz")).close();
+  ExpectFailure("empty file", { Path("empty.xyz"), Path("o10.vtp") }, 1,
+    "empty.xyz: the file is empty", Path("o10.vtp"));
+  {
+    const std::string whole = Slurp(ply);
+    std::ofstream(Path("truncated.ply"), std::ios::binary) << whole.substr(0, whole.size() / 2);
+    ExpectFailure("truncated binary PLY", { Path("truncated.ply"), Path("o11.vtp") }, 1,
+      "truncated.ply: the file ends in vertex", Path("o11.vtp"));
+  }
+  std::ofstream(Path("word.xyz")) << "0 0 0\n1 0 0\n0 abc 1\n";
+  ExpectFailure("non-numeric field", { Path("word.xyz"), Path("o12.vtp") }, 1,
+    "word.xyz:3: field 2 ('abc') is not a number", Path("o12.vtp"));
+  std::ofstream(Path("nan.csv")) << "x,y,z\n0,0,0\n1,nan,0\n";
+  ExpectFailure("NaN in a text file", { Path("nan.csv"), Path("o13.vtp") }, 1,
+    "nan.csv:3: field 2 ('nan') is not a finite number", Path("o13.vtp"));
+  {
+    vtkSmartPointer<vtkPolyData> bad = ModelCloud(vtkFeatureModelSource::MODEL_I, 1000);
+    bad->GetPoints()->SetPoint(417, 0.0, std::nan(""), 1.0);
+    Check(vtkPointCloudIO::Write(bad, Path("nan.vtp"), error), "write nan.vtp: " + error);
+    ExpectFailure("NaN in a binary file", { Path("nan.vtp"), Path("o14.ply") }, 1,
+      "nan.vtp: point 417 (counting from 0) has a non-finite coordinate", Path("o14.ply"));
+  }
+  ExpectFailure("unwritable output path", { vtp, Path("no-such-folder/out.vtp") }, 1,
+    "no-such-folder/out.vtp: cannot create a file in", "");
+  ExpectFailure("output names a folder", { vtp, Path("sub.vtp/") }, 2,
+    "cannot tell the output format", "");
+
+  std::printf("%d failure(s)\n", Failures);
+  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
