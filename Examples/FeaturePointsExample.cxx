@@ -1,8 +1,9 @@
 // FeaturePointsExample: the feature filter in a VTK pipeline.
 //
-//   FeaturePointsExample [OUTPUT.vtp [PICTURE.png [INPUT.vtp]]]
+//   FeaturePointsExample [OUTPUT.vtp [PICTURE.png [INPUT]]]
 //
-// Without INPUT it builds its own example: the surface of a unit cube sampled at random (60,000
+// INPUT is any point cloud file vtkPointCloudIO reads (PLY, VTP, VTU, legacy VTK, PTS, XYZ/TXT,
+// CSV). Without INPUT it builds its own example: the surface of a unit cube sampled at random (60,000
 // points), its edges sampled three times as densely, with Gaussian noise of half the mean spacing.
 // It writes the cloud with the filter's arrays (Normals, SSI, PDI, F, Candidate, FeatureMask) to
 // OUTPUT (default features.vtp) and an offscreen picture, points coloured by F and feature points
@@ -14,21 +15,23 @@
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
+#include "vtkPointCloudIO.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 
 namespace
 {
@@ -72,18 +75,16 @@ int main(int argc, char* argv[])
   const char* output = argc > 1 ? argv[1] : "features.vtp";
   const char* picture = argc > 2 ? argv[2] : "features.png";
 
-  vtkSmartPointer<vtkPolyData> cloud;
+  vtkSmartPointer<vtkPointSet> cloud;
   if (argc > 3)
   {
-    vtkNew<vtkXMLPolyDataReader> reader;
-    reader->SetFileName(argv[3]);
-    reader->Update();
-    if (reader->GetErrorCode() != 0 || reader->GetOutput()->GetNumberOfPoints() == 0)
+    std::string error;
+    cloud = vtkPointCloudIO::Read(argv[3], error);
+    if (!cloud)
     {
-      std::fprintf(stderr, "%s: cannot read a point cloud from this file\n", argv[3]);
+      std::fprintf(stderr, "%s\n", error.c_str());
       return 1;
     }
-    cloud = reader->GetOutput();
   }
   else
   {

@@ -11,6 +11,7 @@
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkLookupTable.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
@@ -465,6 +466,60 @@ bool NeedsMissingDisplay()
   return kind.find("XOpenGL") != std::string::npos && (!display || !*display);
 }
 
+// Looks at the cloud from its thinnest side, tilted so that relief shows: the camera's direction
+// mixes the principal axes of the points (most of the smallest, some of the others), its up
+// vector is the longest axis. A sheet is seen from above, a box at three-quarters.
+void AimCamera(vtkPolyData* cloud, vtkCamera* camera)
+{
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  const vtkIdType stride = std::max<vtkIdType>(1, n / 100000);
+  double mean[3] = { 0, 0, 0 }, x[3];
+  vtkIdType count = 0;
+  for (vtkIdType i = 0; i < n; i += stride, ++count)
+  {
+    cloud->GetPoint(i, x);
+    for (int c = 0; c < 3; ++c)
+    {
+      mean[c] += x[c];
+    }
+  }
+  for (int c = 0; c < 3 && count > 0; ++c)
+  {
+    mean[c] /= count;
+  }
+  double covariance[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  for (vtkIdType i = 0; i < n; i += stride)
+  {
+    cloud->GetPoint(i, x);
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int b = 0; b < 3; ++b)
+      {
+        covariance[a][b] += (x[a] - mean[a]) * (x[b] - mean[b]);
+      }
+    }
+  }
+  double* rows[3] = { covariance[0], covariance[1], covariance[2] };
+  double values[3], vectorStore[3][3];
+  double* vectors[3] = { vectorStore[0], vectorStore[1], vectorStore[2] };
+  if (count < 3 || !vtkMath::Jacobi(rows, values, vectors)) // eigenvalues in decreasing order
+  {
+    return;
+  }
+  double direction[3], up[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    // Columns of `vectors` are the eigenvectors: 0 longest, 2 thinnest.
+    direction[c] = vectors[c][2] + 0.55 * vectors[c][1] - 0.45 * vectors[c][0];
+    up[c] = vectors[c][0];
+  }
+  vtkMath::Normalize(direction);
+  camera->SetFocalPoint(mean);
+  camera->SetPosition(mean[0] + direction[0], mean[1] + direction[1], mean[2] + direction[2]);
+  camera->SetViewUp(up);
+  camera->OrthogonalizeViewUp();
+}
+
 // Renders the result: points coloured by the score on a blue-to-green scale up to the threshold,
 // feature points in red and larger, camera fitted to the cloud.
 bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
@@ -542,8 +597,7 @@ bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
   window->SetOffScreenRendering(1);
   window->SetSize(width, height);
   window->AddRenderer(renderer);
-  renderer->GetActiveCamera()->Azimuth(35);
-  renderer->GetActiveCamera()->Elevation(25);
+  AimCamera(result, renderer->GetActiveCamera());
   renderer->ResetCamera();
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
