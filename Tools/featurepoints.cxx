@@ -558,6 +558,7 @@ bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
   vtkNew<vtkActor> cloudActor;
   cloudActor->SetMapper(cloudMapper);
   cloudActor->GetProperty()->SetPointSize(pointSize);
+  cloudActor->GetProperty()->LightingOff(); // flat colours: a cloud's normals would shade it
   vtkNew<vtkPolyDataMapper> featureMapper;
   featureMapper->SetInputData(features);
   featureMapper->ScalarVisibilityOff();
@@ -565,6 +566,7 @@ bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
   featureActor->SetMapper(featureMapper);
   featureActor->GetProperty()->SetColor(0.9, 0.05, 0.05);
   featureActor->GetProperty()->SetPointSize(pointSize + 1.5);
+  featureActor->GetProperty()->LightingOff();
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(lut);
   bar->SetTitle(scoreName);
