@@ -26,6 +26,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <functional>
+#include <numeric>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -84,26 +85,31 @@ vtkSmartPointer<vtkPolyData> AsPolyData(vtkPointSet* data)
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(data->GetPoints());
   poly->GetPointData()->ShallowCopy(data->GetPointData());
-  const vtkIdType n = data->GetNumberOfPoints();
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(n + 1);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    offsets->SetValue(i, i);
-    connectivity->SetValue(i, i);
-  }
-  offsets->SetValue(n, n);
-  vtkNew<vtkCellArray> verts;
-  verts->SetData(offsets, connectivity);
-  poly->SetVerts(verts);
+  poly->SetVerts(vtkPointCloudIO::MakeVertexCells(data->GetNumberOfPoints()));
   return poly;
 }
 
 // The temporary file being written, for RemoveTemporaryFileInProgress-style clean-up on signals.
 char TemporaryInProgress[4096] = { 0 };
 } // namespace
+
+vtkSmartPointer<vtkCellArray> vtkPointCloudIO::MakeVertexCells(vtkIdType n)
+{
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  // SetNumberOfValues reports a failed allocation by leaving the size unchanged.
+  offsets->SetNumberOfValues(n + 1);
+  connectivity->SetNumberOfValues(n);
+  if (offsets->GetNumberOfValues() != n + 1 || connectivity->GetNumberOfValues() != n)
+  {
+    return nullptr;
+  }
+  std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, vtkIdType(0));
+  std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, vtkIdType(0));
+  auto verts = vtkSmartPointer<vtkCellArray>::New();
+  verts->SetData(offsets, connectivity);
+  return verts;
+}
 
 std::string vtkPointCloudIO::GetExtension(const std::string& fileName)
 {

@@ -27,6 +27,7 @@
 #include <string> // For file names and messages
 
 class vtkAlgorithm;
+class vtkCellArray;
 class vtkCommand;
 class vtkPointSet;
 
@@ -84,6 +85,9 @@ public:
    * SIGINT/SIGTERM handler calls it so that an interrupted run leaves no file behind.
    */
   static void RemoveTemporaryFileInProgress();
+
+  /** One vertex cell per point, 0 to n-1 (nullptr when the memory cannot be had). */
+  static vtkSmartPointer<vtkCellArray> MakeVertexCells(vtkIdType n);
 
   /** The message of a VTK error or warning event, without its "ERROR: In file, line" preamble. */
   static std::string MessageText(const char* vtkMessage);

@@ -1,4 +1,5 @@
 #include "vtkPointCloudPLYReader.h"
+#include "vtkPointCloudPLYTypes.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -7,6 +8,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointCloudIO.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -31,109 +33,10 @@
 
 vtkStandardNewMacro(vtkPointCloudPLYReader);
 
+using namespace featurepoints::ply;
+
 namespace
 {
-enum class PlyType
-{
-  Int8,
-  UInt8,
-  Int16,
-  UInt16,
-  Int32,
-  UInt32,
-  Float32,
-  Float64
-};
-
-bool TypeFromName(std::string_view name, PlyType& type)
-{
-  static const struct
-  {
-    const char* Name;
-    PlyType Type;
-  } names[] = { { "char", PlyType::Int8 }, { "int8", PlyType::Int8 }, { "uchar", PlyType::UInt8 },
-    { "uint8", PlyType::UInt8 }, { "short", PlyType::Int16 }, { "int16", PlyType::Int16 },
-    { "ushort", PlyType::UInt16 }, { "uint16", PlyType::UInt16 }, { "int", PlyType::Int32 },
-    { "int32", PlyType::Int32 }, { "uint", PlyType::UInt32 }, { "uint32", PlyType::UInt32 },
-    { "float", PlyType::Float32 }, { "float32", PlyType::Float32 }, { "double", PlyType::Float64 },
-    { "float64", PlyType::Float64 } };
-  for (const auto& n : names)
-  {
-    if (name == n.Name)
-    {
-      type = n.Type;
-      return true;
-    }
-  }
-  return false;
-}
-
-const char* TypeName(PlyType type)
-{
-  static const char* names[] = { "char", "uchar", "short", "ushort", "int", "uint", "float",
-    "double" };
-  return names[static_cast<int>(type)];
-}
-
-size_t TypeSize(PlyType type)
-{
-  static const size_t sizes[] = { 1, 1, 2, 2, 4, 4, 4, 8 };
-  return sizes[static_cast<int>(type)];
-}
-
-int VTKType(PlyType type)
-{
-  // PLY's char is int8 whatever the platform's char is: vtkSignedCharArray, not vtkCharArray.
-  static const int types[] = { VTK_SIGNED_CHAR, VTK_UNSIGNED_CHAR, VTK_SHORT, VTK_UNSIGNED_SHORT,
-    VTK_INT, VTK_UNSIGNED_INT, VTK_FLOAT, VTK_DOUBLE };
-  return types[static_cast<int>(type)];
-}
-
-bool IsInteger(PlyType type)
-{
-  return type != PlyType::Float32 && type != PlyType::Float64;
-}
-
-// Calls f(T()) with the C++ type of a PLY type.
-template <typename F>
-void WithType(PlyType type, F&& f)
-{
-  switch (type)
-  {
-    case PlyType::Int8:
-      f(int8_t());
-      break;
-    case PlyType::UInt8:
-      f(uint8_t());
-      break;
-    case PlyType::Int16:
-      f(int16_t());
-      break;
-    case PlyType::UInt16:
-      f(uint16_t());
-      break;
-    case PlyType::Int32:
-      f(int32_t());
-      break;
-    case PlyType::UInt32:
-      f(uint32_t());
-      break;
-    case PlyType::Float32:
-      f(float());
-      break;
-    case PlyType::Float64:
-      f(double());
-      break;
-  }
-}
-
-bool HostIsBigEndian()
-{
-  const uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 0;
-}
 
 template <typename T, bool Swap>
 inline T Load(const char* p)
@@ -1274,18 +1177,11 @@ bool PLYParser::Read(vtkPolyData* output, bool createVertexCells)
   if (createVertexCells)
   {
     const vtkIdType n = static_cast<vtkIdType>(vertex->Count);
-    vtkNew<vtkIdTypeArray> offsets;
-    vtkNew<vtkIdTypeArray> connectivity;
-    offsets->SetNumberOfValues(n + 1);
-    connectivity->SetNumberOfValues(n);
-    if (offsets->GetNumberOfValues() != n + 1 || connectivity->GetNumberOfValues() != n)
+    vtkSmartPointer<vtkCellArray> verts = vtkPointCloudIO::MakeVertexCells(n);
+    if (!verts)
     {
       return this->Fail("cannot allocate memory for " + std::to_string(n) + " vertex cells");
     }
-    std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, vtkIdType(0));
-    std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, vtkIdType(0));
-    vtkNew<vtkCellArray> verts;
-    verts->SetData(offsets, connectivity);
     output->SetVerts(verts);
   }
   return true;

@@ -1,4 +1,5 @@
 #include "vtkPointCloudPLYWriter.h"
+#include "vtkPointCloudPLYTypes.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
@@ -25,73 +26,10 @@
 
 vtkStandardNewMacro(vtkPointCloudPLYWriter);
 
+using namespace featurepoints::ply;
+
 namespace
 {
-enum class PlyType
-{
-  Int8,
-  UInt8,
-  Int16,
-  UInt16,
-  Int32,
-  UInt32,
-  Float32,
-  Float64
-};
-
-const char* TypeName(PlyType type)
-{
-  static const char* names[] = { "char", "uchar", "short", "ushort", "int", "uint", "float",
-    "double" };
-  return names[static_cast<int>(type)];
-}
-
-size_t TypeSize(PlyType type)
-{
-  static const size_t sizes[] = { 1, 1, 2, 2, 4, 4, 4, 8 };
-  return sizes[static_cast<int>(type)];
-}
-
-// Calls f(T()) with the C++ type of a PLY type.
-template <typename F>
-void WithType(PlyType type, F&& f)
-{
-  switch (type)
-  {
-    case PlyType::Int8:
-      f(int8_t());
-      break;
-    case PlyType::UInt8:
-      f(uint8_t());
-      break;
-    case PlyType::Int16:
-      f(int16_t());
-      break;
-    case PlyType::UInt16:
-      f(uint16_t());
-      break;
-    case PlyType::Int32:
-      f(int32_t());
-      break;
-    case PlyType::UInt32:
-      f(uint32_t());
-      break;
-    case PlyType::Float32:
-      f(float());
-      break;
-    case PlyType::Float64:
-      f(double());
-      break;
-  }
-}
-
-bool HostIsBigEndian()
-{
-  const uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 0;
-}
 
 // True when every value of a (64-bit integer) array fits in a 32-bit int.
 bool FitsInt32(vtkDataArray* array)

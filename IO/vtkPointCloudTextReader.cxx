@@ -7,6 +7,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointCloudIO.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -234,22 +235,6 @@ std::vector<ColumnTarget> TargetsByPosition(size_t n, bool pts, std::vector<Arra
   return targets;
 }
 
-vtkSmartPointer<vtkCellArray> VertexCells(vtkIdType n)
-{
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(n + 1);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    offsets->SetValue(i, i);
-    connectivity->SetValue(i, i);
-  }
-  offsets->SetValue(n, n);
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  cells->SetData(offsets, connectivity);
-  return cells;
-}
 } // namespace
 
 vtkPointCloudTextReader::vtkPointCloudTextReader()
@@ -503,7 +488,7 @@ int vtkPointCloudTextReader::RequestData(
   }
   if (this->CreateVertexCells)
   {
-    output->SetVerts(VertexCells(n));
+    output->SetVerts(vtkPointCloudIO::MakeVertexCells(n));
   }
   this->UpdateProgress(1.0);
   return 1;
