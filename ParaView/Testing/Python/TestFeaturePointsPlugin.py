@@ -1,0 +1,127 @@
+"""The FeaturePoints plugin in pvbatch, checked against the plain VTK build.
+
+  pvbatch TestFeaturePointsPlugin.py PLUGIN REFERENCE BASELINE.png OUTPUT_FOLDER
+
+Loads the plugin, checks the server-manager XML (menu category, documentation on every
+property, input restricted to point sets), runs every detector on the synthetic cloud of
+REFERENCE (written by the plain VTK build's test TestFeaturePointsReference) and compares the
+arrays, the number of feature points and the feature point ids; shows the main filter (it must
+come up as points coloured by F), saves a screenshot and compares it with BASELINE.png.
+Exits 1 on any failed check.
+"""
+import os
+import sys
+
+from paraview import servermanager
+from paraview.simple import (CreateRenderView, FeatureModelSource, LoadPlugin, Render,
+                             ResetCamera, SaveScreenshot, Show)
+
+plugin, reference_file, baseline, folder = sys.argv[1:5]
+failures = []
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+        print("FAILED: " + what)
+
+
+LoadPlugin(plugin, remote=False, ns=globals())
+
+# The XML: every filter under "Point Cloud", every property documented, point sets only.
+pxm = servermanager.ProxyManager()
+proxies = {"FeaturePointExtraction": "FeaturePoints",
+           "SmoothShrinkIndexFeatures": "SSIFeaturePoints",
+           "SurfaceVariationFeatures": "PCAFeaturePoints",
+           "CurvatureDensityFeatures": "WangYuanFeaturePoints"}
+wavelet = servermanager.sources.RTAnalyticSource()
+for group, name in [("filters", n) for n in proxies] + [("sources", "FeatureModelSource")]:
+    proto = pxm.GetPrototypeProxy(group, name)
+    check(proto is not None, "%s: no proxy" % name)
+    if proto is None:
+        continue
+    menu = proto.GetHints().FindNestedElementByName("ShowInMenu") if proto.GetHints() else None
+    check(menu is not None and menu.GetAttribute("category") == "Point Cloud",
+          "%s: not in the Point Cloud menu" % name)
+    it = proto.NewPropertyIterator()
+    it.Begin()
+    count = 0
+    while not it.IsAtEnd():
+        doc = it.GetProperty().GetDocumentation()
+        check(doc is not None and len(doc.GetDescription().strip()) > 10,
+              "%s.%s: no documentation" % (name, it.GetKey()))
+        count += 1
+        it.Next()
+    print("%s: %d properties, all documented" % (name, count))
+    if group == "filters":
+        domain = proto.GetProperty("Input").GetDomain("input_type")
+        check(domain.IsInDomain(wavelet.SMProxy, 0) == 0, "%s accepts an image" % name)
+
+# Results: the same as the plain VTK build's, for the same generated cloud.
+reference = {}
+settings = {}
+with open(reference_file) as f:
+    for line in f:
+        if line.startswith("#") or not line.strip():
+            continue
+        fields = line.split()
+        if fields[0] == "cloud":
+            settings = dict(item.split("=") for item in fields[1:])
+            continue
+        reference[fields[0]] = (int(fields[1]), fields[2].split(","), [int(i) for i in fields[3:]])
+source = FeatureModelSource(Model=int(settings["model"]), NumberOfPoints=int(settings["points"]),
+                            Seed=int(settings["seed"]))
+for proxy_name, simple_name in proxies.items():
+    expected_count, expected_arrays, expected_ids = reference[proxy_name]
+    detector = globals()[simple_name](Input=source)
+    data = servermanager.Fetch(detector)
+    pd = data.GetPointData()
+    arrays = sorted(pd.GetArrayName(i) for i in range(pd.GetNumberOfArrays()))
+    mask = pd.GetArray("FeatureMask")
+    ids = [i for i in range(data.GetNumberOfPoints()) if mask and mask.GetValue(i)]
+    check(arrays == sorted(expected_arrays), "%s: arrays %s, plain VTK build %s"
+          % (simple_name, arrays, sorted(expected_arrays)))
+    check(len(ids) == expected_count, "%s: %d feature points, plain VTK build %d"
+          % (simple_name, len(ids), expected_count))
+    check(ids == expected_ids, "%s: %d feature point ids differ from the plain VTK build's"
+          % (simple_name, len(set(ids) ^ set(expected_ids))))
+    detector.UpdatePropertyInformation()
+    check(detector.GetProperty("NumberOfFeaturePoints")[0] == expected_count,
+          "%s: NumberOfFeaturePoints information property" % simple_name)
+    print("%s: %d feature points of %d, arrays %s: same as the plain VTK build"
+          % (simple_name, len(ids), data.GetNumberOfPoints(), ",".join(arrays)))
+
+# Shown: points, coloured by F; then the picture against the baseline.
+view = CreateRenderView()
+view.OrientationAxesVisibility = 0
+detector = globals()["FeaturePoints"](Input=source)
+display = Show(detector, view)
+check(display.Representation == "Points", "shown as %s, not Points" % display.Representation)
+check(list(display.ColorArrayName) == ["POINTS", "F"],
+      "coloured by %s, not F" % list(display.ColorArrayName))
+view.CameraPosition = [60.0, -160.0, 140.0]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraViewUp = [0.0, 0.0, 1.0]
+ResetCamera(view)
+Render(view)
+picture = os.path.join(folder, "TestFeaturePointsPlugin.png")
+SaveScreenshot(picture, view, ImageResolution=[640, 480])
+if not os.path.exists(baseline):
+    check(False, "no baseline %s; the picture is %s" % (baseline, picture))
+else:
+    from vtkmodules.vtkImagingCore import vtkImageDifference
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    test, valid = vtkPNGReader(), vtkPNGReader()
+    test.SetFileName(picture)
+    valid.SetFileName(baseline)
+    difference = vtkImageDifference()
+    difference.SetInputConnection(test.GetOutputPort())
+    difference.SetImageConnection(valid.GetOutputPort())
+    difference.Update()
+    error = difference.GetThresholdedError()
+    print("screenshot: thresholded error %.3f against %s" % (error, baseline))
+    check(error <= 10.0, "screenshot differs from the baseline (%.3f > 10); see %s"
+          % (error, picture))
+
+print("%d failure(s)" % len(failures))
+sys.exit(1 if failures else 0)
