@@ -9,6 +9,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticPointLocator.h"
@@ -16,8 +17,33 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 vtkStandardNewMacro(vtkPointCloudNeighborhoods);
+
+struct vtkPointCloudNeighborhoods::SearchGrid
+{
+  double Origin[3] = { 0, 0, 0 };
+  double Spacing = 1.0; // side of a cell
+  int Dims[3] = { 1, 1, 1 };
+  std::vector<int32_t> CellStart;   // first slot of each cell, then the number of slots
+  std::vector<int32_t> SortedIds;   // point id of each slot, cell by cell, ascending in a cell
+  std::vector<double> SortedPoints; // coordinates of each slot
+
+  vtkIdType Index(int i, int j, int k) const
+  {
+    return i + this->Dims[0] * (j + static_cast<vtkIdType>(this->Dims[1]) * k);
+  }
+  // The cell of x, clamped to the grid: points beyond the robust box sit in its border cells.
+  void CellOf(const double x[3], int c[3]) const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double f = std::floor((x[a] - this->Origin[a]) / this->Spacing);
+      c[a] = f < 0.0 ? 0 : (f >= this->Dims[a] - 1 ? this->Dims[a] - 1 : static_cast<int>(f));
+    }
+  }
+};
 
 namespace
 {
@@ -87,6 +113,168 @@ struct NearestNeighborsWorker
 
   void Reduce() {}
 };
+
+// Exact k nearest neighbours on the module's own uniform grid (vtkPointCloudNeighborhoods::Grid):
+// rings of cells around the query's cell, nearest first, until the k-th best distance is below
+// the distance to the unsearched cells. Candidates are ordered by (distance, id), so ties are
+// broken the same way whatever the scanning order, and each row depends on its point only.
+struct GridNeighborsWorker
+{
+  const vtkPointCloudNeighborhoods::SearchGrid* Grid;
+  vtkPoints* Points;
+  const unsigned char* Valid;
+  const vtkIdType* Ids;
+  const vtkIdType* Order; // rows in grid order, for cache locality
+  int K;
+  int32_t* Table;
+  double* Nearest;
+
+  struct Candidate
+  {
+    double D2;
+    int32_t Id;
+    bool operator<(const Candidate& o) const { return D2 < o.D2 || (D2 == o.D2 && Id < o.Id); }
+  };
+  vtkSMPThreadLocal<std::vector<Candidate>> Candidates;
+
+  void Initialize() {}
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    std::vector<Candidate>& candidates = this->Candidates.Local();
+    const auto& g = *this->Grid;
+    double x[3];
+    for (vtkIdType o = begin; o < end; ++o)
+    {
+      const vtkIdType r = this->Order[o];
+      const vtkIdType id = this->Ids[r];
+      int32_t* row = this->Table + r * this->K;
+      int n = 0;
+      double nearest = 0.0;
+      if (this->Valid[id])
+      {
+        this->Points->GetPoint(id, x);
+        candidates.clear();
+        const bool useHeap = this->K <= 8;
+        int c[3];
+        g.CellOf(x, c);
+        for (int ring = 0;; ++ring)
+        {
+          const int lo[3] = { std::max(c[0] - ring, 0), std::max(c[1] - ring, 0),
+            std::max(c[2] - ring, 0) };
+          const int hi[3] = { std::min(c[0] + ring, g.Dims[0] - 1),
+            std::min(c[1] + ring, g.Dims[1] - 1), std::min(c[2] + ring, g.Dims[2] - 1) };
+          auto scan = [&](int i, int j, int k) {
+            const vtkIdType cell = g.Index(i, j, k);
+            for (int32_t s = g.CellStart[cell]; s < g.CellStart[cell + 1]; ++s)
+            {
+              const int32_t other = g.SortedIds[s];
+              if (other == id)
+              {
+                continue;
+              }
+              const double* y = g.SortedPoints.data() + 3 * static_cast<size_t>(s);
+              const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+              const Candidate cand{ dx * dx + dy * dy + dz * dz, other };
+              if (!useHeap)
+              {
+                candidates.push_back(cand);
+              }
+              else if (static_cast<int>(candidates.size()) < this->K)
+              {
+                candidates.push_back(cand);
+                std::push_heap(candidates.begin(), candidates.end());
+              }
+              else if (cand < candidates.front())
+              {
+                std::pop_heap(candidates.begin(), candidates.end());
+                candidates.back() = cand;
+                std::push_heap(candidates.begin(), candidates.end());
+              }
+            }
+          };
+          // The cells at Chebyshev distance `ring` from the query's cell: whole rows on the
+          // block's faces, the two end cells of the rows inside it.
+          for (int k = lo[2]; k <= hi[2]; ++k)
+          {
+            const bool kFace = k == c[2] - ring || k == c[2] + ring;
+            for (int j = lo[1]; j <= hi[1]; ++j)
+            {
+              if (kFace || j == c[1] - ring || j == c[1] + ring)
+              {
+                for (int i = lo[0]; i <= hi[0]; ++i)
+                {
+                  scan(i, j, k);
+                }
+              }
+              else
+              {
+                if (c[0] - ring >= 0)
+                {
+                  scan(c[0] - ring, j, k);
+                }
+                if (c[0] + ring < g.Dims[0])
+                {
+                  scan(c[0] + ring, j, k);
+                }
+              }
+            }
+          }
+          // Any point not yet seen lies outside the searched block of cells.
+          bool everything = true;
+          double gap = VTK_DOUBLE_MAX;
+          for (int a = 0; a < 3; ++a)
+          {
+            if (c[a] - ring > 0)
+            {
+              gap = std::min(gap, x[a] - (g.Origin[a] + (c[a] - ring) * g.Spacing));
+              everything = false;
+            }
+            if (c[a] + ring < g.Dims[a] - 1)
+            {
+              gap = std::min(gap, g.Origin[a] + (c[a] + ring + 1) * g.Spacing - x[a]);
+              everything = false;
+            }
+          }
+          // Every candidate seen so far is kept: the k-th smallest decides whether the next
+          // ring can hold a nearer point (a selection per ring costs less than a candidates per point).
+          if (static_cast<int>(candidates.size()) >= this->K)
+          {
+            std::nth_element(candidates.begin(), candidates.begin() + (this->K - 1), candidates.end());
+            if (everything || (gap > 0.0 && candidates[this->K - 1].D2 < gap * gap))
+            {
+              candidates.resize(this->K);
+              break;
+            }
+          }
+          else if (everything)
+          {
+            break;
+          }
+        }
+        std::sort(candidates.begin(), candidates.end());
+        for (const Candidate& cand : candidates)
+        {
+          row[n++] = cand.Id;
+        }
+        if (n > 0)
+        {
+          nearest = std::sqrt(candidates.front().D2);
+        }
+      }
+      for (; n < this->K; ++n)
+      {
+        row[n] = -1;
+      }
+      if (this->Nearest)
+      {
+        this->Nearest[r] = nearest;
+      }
+    }
+  }
+
+  void Reduce() {}
+};
 } // namespace
 
 vtkPointCloudNeighborhoods::vtkPointCloudNeighborhoods() = default;
@@ -100,6 +288,8 @@ vtkPoints* vtkPointCloudNeighborhoods::GetPoints() const
 bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)
 {
   this->Points = points;
+  this->Searchable = false;
+  this->Grid.reset();
   this->Locator = nullptr;
   this->LocatorData = nullptr;
   this->LocatorToPoint.clear();
@@ -160,6 +350,12 @@ bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)
     this->Center[c] = 0.5 * (lo[c] + hi[c]);
   }
 
+  if (this->SearchMethod == GRID)
+  {
+    this->BuildGrid();
+    this->Searchable = true;
+    return true;
+  }
   this->LocatorData = vtkSmartPointer<vtkPolyData>::New();
   if (this->NumberOfValidPoints == n)
   {
@@ -187,7 +383,125 @@ bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)
   this->Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
   this->Locator->SetDataSet(this->LocatorData);
   this->Locator->BuildLocator();
+  this->Searchable = true;
   return true;
+}
+
+void vtkPointCloudNeighborhoods::BuildGrid()
+{
+  this->Grid.reset(new SearchGrid);
+  SearchGrid& g = *this->Grid;
+  const vtkIdType n = this->NumberOfPoints;
+  const vtkIdType m = this->NumberOfValidPoints;
+  vtkPoints* points = this->Points;
+
+  // The box: the bounds, or the central 99 % of the points widened by half its size when a few
+  // far outliers stretch the bounds more than four times (they then share the border cells).
+  double lo[3], hi[3];
+  {
+    const vtkIdType stride = std::max<vtkIdType>(1, m / 100000);
+    std::vector<double> sample[3];
+    double x[3];
+    vtkIdType seen = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (this->Valid[i] && (seen++ % stride) == 0)
+      {
+        points->GetPoint(i, x);
+        for (int a = 0; a < 3; ++a)
+        {
+          sample[a].push_back(x[a]);
+        }
+      }
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = this->Bounds[2 * a];
+      hi[a] = this->Bounds[2 * a + 1];
+      std::vector<double>& v = sample[a];
+      const size_t qlo = v.size() / 200, qhi = v.size() - 1 - v.size() / 200;
+      std::nth_element(v.begin(), v.begin() + qlo, v.end());
+      const double rlo = v[qlo];
+      std::nth_element(v.begin(), v.begin() + qhi, v.end());
+      const double rhi = v[qhi];
+      const double robust = rhi - rlo;
+      if (robust > 0.0 && hi[a] - lo[a] > 4.0 * robust)
+      {
+        lo[a] = std::max(lo[a], rlo - 0.5 * robust);
+        hi[a] = std::min(hi[a], rhi + 0.5 * robust);
+      }
+    }
+  }
+  // Cell side: the smallest for which the grid has at most two cells per point.
+  double extent[3], largest = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    extent[a] = hi[a] - lo[a];
+    largest = std::max(largest, extent[a]);
+  }
+  if (!(largest > 0.0))
+  {
+    largest = 1.0;
+  }
+  const double cells = 2.0 * static_cast<double>(m);
+  auto count = [&](double h) {
+    double product = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      product *= std::max(1.0, std::ceil(extent[a] / h));
+    }
+    return product;
+  };
+  double small = largest * 1e-7, big = largest * 1.000001;
+  for (int iteration = 0; iteration < 100 && big / small > 1.0001; ++iteration)
+  {
+    const double h = std::sqrt(small * big);
+    (count(h) > cells ? small : big) = h;
+  }
+  g.Spacing = big;
+  for (int a = 0; a < 3; ++a)
+  {
+    g.Origin[a] = lo[a];
+    g.Dims[a] = static_cast<int>(std::max(1.0, std::ceil(extent[a] / g.Spacing)));
+  }
+  const vtkIdType numberOfCells = static_cast<vtkIdType>(g.Dims[0]) * g.Dims[1] * g.Dims[2];
+
+  // Counting sort of the valid points by cell, ascending ids within a cell.
+  std::vector<int64_t> cellOf(n, -1);
+  g.CellStart.assign(numberOfCells + 1, 0);
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    double x[3];
+    int c[3];
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      if (this->Valid[i])
+      {
+        points->GetPoint(i, x);
+        g.CellOf(x, c);
+        cellOf[i] = g.Index(c[0], c[1], c[2]);
+      }
+    }
+  });
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (cellOf[i] >= 0)
+    {
+      ++g.CellStart[cellOf[i] + 1];
+    }
+  }
+  std::partial_sum(g.CellStart.begin(), g.CellStart.end(), g.CellStart.begin());
+  g.SortedIds.resize(m);
+  g.SortedPoints.resize(3 * static_cast<size_t>(m));
+  std::vector<int32_t> next(g.CellStart.begin(), g.CellStart.end() - 1);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (cellOf[i] >= 0)
+    {
+      const int32_t slot = next[cellOf[i]]++;
+      g.SortedIds[slot] = static_cast<int32_t>(i);
+      points->GetPoint(i, g.SortedPoints.data() + 3 * static_cast<size_t>(slot));
+    }
+  }
 }
 
 std::vector<vtkIdType> vtkPointCloudNeighborhoods::GetValidIds() const
@@ -210,7 +524,7 @@ double vtkPointCloudNeighborhoods::ComputeMeanSpacing()
   {
     return this->MeanSpacing;
   }
-  if (!this->Locator)
+  if (!this->Searchable)
   {
     return 0.0;
   }
@@ -233,7 +547,7 @@ double vtkPointCloudNeighborhoods::ComputeMeanSpacing(
   {
     return this->MeanSpacing;
   }
-  if (!this->Locator)
+  if (!this->Searchable)
   {
     return 0.0;
   }
@@ -341,10 +655,15 @@ bool vtkPointCloudNeighborhoods::FindNearestNeighbors(int k, const std::vector<v
   {
     nearestDistances->resize(rows);
   }
-  if (k <= 0 || rows == 0 || !this->Locator)
+  if (k <= 0 || rows == 0 || !this->Searchable)
   {
     std::fill(table.begin(), table.end(), -1);
     return true;
+  }
+  if (this->SearchMethod == GRID)
+  {
+    return this->FindNearestNeighborsOnGrid(
+      k, ids, table, nearestDistances, progressAlg, progressStart, progressEnd);
   }
 
   NearestNeighborsWorker worker{ this->Points, this->Locator,
@@ -352,6 +671,58 @@ bool vtkPointCloudNeighborhoods::FindNearestNeighbors(int k, const std::vector<v
     ids.data(), k, table.data(), nearestDistances ? nearestDistances->data() : nullptr, {} };
 
   // Batches let the main thread report progress and honour an abort request between them.
+  const vtkIdType batch = std::max<vtkIdType>(20000, rows / 50);
+  for (vtkIdType begin = 0; begin < rows; begin += batch)
+  {
+    const vtkIdType end = std::min(rows, begin + batch);
+    vtkSMPTools::For(begin, end, worker);
+    if (progressAlg)
+    {
+      progressAlg->UpdateProgress(progressStart +
+        (progressEnd - progressStart) * static_cast<double>(end) / static_cast<double>(rows));
+      if (progressAlg->GetAbortExecute())
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool vtkPointCloudNeighborhoods::FindNearestNeighborsOnGrid(int k,
+  const std::vector<vtkIdType>& ids, std::vector<int32_t>& table,
+  std::vector<double>* nearestDistances, vtkAlgorithm* progressAlg, double progressStart,
+  double progressEnd)
+{
+  const SearchGrid& g = *this->Grid;
+  const vtkIdType rows = static_cast<vtkIdType>(ids.size());
+  // The queries cell by cell, so that neighbouring queries read the same cells.
+  std::vector<std::pair<int64_t, vtkIdType>> keyed(rows);
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    double x[3];
+    int c[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      int64_t key = -1;
+      if (this->Valid[ids[r]])
+      {
+        this->Points->GetPoint(ids[r], x);
+        g.CellOf(x, c);
+        key = g.Index(c[0], c[1], c[2]);
+      }
+      keyed[r] = { key, r };
+    }
+  });
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<vtkIdType> order(rows);
+  for (vtkIdType r = 0; r < rows; ++r)
+  {
+    order[r] = keyed[r].second;
+  }
+  std::vector<std::pair<int64_t, vtkIdType>>().swap(keyed);
+
+  GridNeighborsWorker worker{ &g, this->Points, this->Valid.data(), ids.data(), order.data(), k,
+    table.data(), nearestDistances ? nearestDistances->data() : nullptr, {} };
   const vtkIdType batch = std::max<vtkIdType>(20000, rows / 50);
   for (vtkIdType begin = 0; begin < rows; begin += batch)
   {

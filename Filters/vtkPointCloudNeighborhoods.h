@@ -33,6 +33,7 @@
 #include "vtkSmartPointer.h" // For ivars
 
 #include <cstdint> // For int32_t
+#include <memory>  // For the search grid
 #include <string>  // For error text
 #include <vector>  // For tables
 
@@ -48,6 +49,28 @@ public:
   static vtkPointCloudNeighborhoods* New();
   vtkTypeMacro(vtkPointCloudNeighborhoods, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum SearchMethods
+  {
+    GRID = 0,                 ///< this class's uniform grid (default)
+    STATIC_POINT_LOCATOR = 1, ///< vtkStaticPointLocator::FindClosestNPoints
+  };
+
+  ///@{
+  /**
+   * How the k nearest points are found; both give the same tables (ties in distance aside, which
+   * GRID breaks by the smaller point id). GRID, the default, sorts the points into a uniform grid
+   * of about two cells per point over the cloud's robust bounding box and searches rings of cells
+   * around each query, the queries themselves taken cell by cell: measured against
+   * STATIC_POINT_LOCATOR in Benchmarks/FeaturePointsScalingBenchmark (README, "Speed"). Set before
+   * Build().
+   */
+  void SetSearchMethod(int method) { this->SearchMethod = method == STATIC_POINT_LOCATOR ? method : GRID; }
+  int GetSearchMethod() const { return this->SearchMethod; }
+  ///@}
+
+  /** The grid of the GRID search (opaque). */
+  struct SearchGrid;
 
   /**
    * Validate the points and build the locator. Returns false, with a message in GetErrorText(),
@@ -134,6 +157,9 @@ protected:
   vtkSmartPointer<vtkPoints> Points;
   vtkSmartPointer<vtkPolyData> LocatorData; // the valid points only
   vtkSmartPointer<vtkStaticPointLocator> Locator;
+  std::unique_ptr<SearchGrid> Grid;
+  int SearchMethod = GRID;
+  bool Searchable = false; // Build() succeeded
   std::vector<vtkIdType> LocatorToPoint; // empty when all points are valid
   std::vector<unsigned char> Valid;
   std::vector<double> NearestDistances;
@@ -145,6 +171,11 @@ protected:
   double Center[3] = { 0, 0, 0 };
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
   std::string ErrorText;
+
+  void BuildGrid();
+  bool FindNearestNeighborsOnGrid(int k, const std::vector<vtkIdType>& ids,
+    std::vector<int32_t>& table, std::vector<double>* nearestDistances, vtkAlgorithm* progressAlg,
+    double progressStart, double progressEnd);
 
   // Completes NearestDistances for duplicates and averages them (shared by both spacing methods).
   double FinishMeanSpacing();

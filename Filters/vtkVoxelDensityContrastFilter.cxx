@@ -39,18 +39,61 @@ inline void UnpackKey(uint64_t key, int64_t ijk[3])
   ijk[2] = static_cast<int64_t>((key >> (2 * KeyBits)) & mask);
 }
 
-// The occupied voxels, sorted by key, with their point counts.
+// The occupied voxels, sorted by key, with their point counts, and an open-addressing hash table
+// from key to index for the neighbour lookups (26 per voxel and pass).
 struct SparseGrid
 {
   std::vector<uint64_t> Keys;
   std::vector<int32_t> Counts;
+  std::vector<uint64_t> SlotKeys; // hash table: key + 1 (0 marks an empty slot)
+  std::vector<int32_t> SlotIndex;
+  uint64_t Mask = 0;
+
+  static uint64_t Mix(uint64_t key)
+  {
+    key ^= key >> 33;
+    key *= 0xff51afd7ed558ccdULL;
+    key ^= key >> 33;
+    return key;
+  }
+
+  void BuildTable()
+  {
+    size_t size = 16;
+    while (size < 2 * this->Keys.size())
+    {
+      size *= 2;
+    }
+    this->Mask = size - 1;
+    this->SlotKeys.assign(size, 0);
+    this->SlotIndex.assign(size, -1);
+    for (size_t v = 0; v < this->Keys.size(); ++v)
+    {
+      uint64_t slot = Mix(this->Keys[v]) & this->Mask;
+      while (this->SlotKeys[slot] != 0)
+      {
+        slot = (slot + 1) & this->Mask;
+      }
+      this->SlotKeys[slot] = this->Keys[v] + 1;
+      this->SlotIndex[slot] = static_cast<int32_t>(v);
+    }
+  }
 
   // Index of the voxel with this key, -1 when empty.
   vtkIdType Find(uint64_t key) const
   {
-    auto it = std::lower_bound(this->Keys.begin(), this->Keys.end(), key);
-    return (it != this->Keys.end() && *it == key) ? static_cast<vtkIdType>(it - this->Keys.begin())
-                                                  : -1;
+    for (uint64_t slot = Mix(key) & this->Mask;; slot = (slot + 1) & this->Mask)
+    {
+      const uint64_t stored = this->SlotKeys[slot];
+      if (stored == key + 1)
+      {
+        return this->SlotIndex[slot];
+      }
+      if (stored == 0)
+      {
+        return -1;
+      }
+    }
   }
 
   // Calls f(neighbourIndex) for each occupied voxel of the 26-neighbourhood of voxel v.
@@ -202,6 +245,7 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
     ++grid.Counts.back();
   }
   start.push_back(static_cast<vtkIdType>(keyed.size()));
+  grid.BuildTable();
   const vtkIdType nVoxels = static_cast<vtkIdType>(grid.Keys.size());
   this->NumberOfOccupiedVoxels = nVoxels;
 
