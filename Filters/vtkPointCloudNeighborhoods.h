@@ -3,9 +3,9 @@
  * @brief   k-nearest-neighbour tables and the mean point spacing of a point cloud, shared by the
  *          feature filters of this module.
  *
- * vtkPointCloudNeighborhoods validates a cloud's coordinates once, builds one
- * vtkStaticPointLocator over its finite points, and answers the two questions every score of this
- * module needs:
+ * vtkPointCloudNeighborhoods validates a cloud's coordinates once, builds one search structure
+ * over its finite points (its own uniform grid by default, or a vtkStaticPointLocator: see
+ * SearchMethod), and answers the two questions every score of this module needs:
  *
  * - the mean spacing d: the mean, over all points, of the distance to the nearest *distinct* point
  *   (for a point stacked on duplicates, the nearest point at a nonzero distance), leaving out
