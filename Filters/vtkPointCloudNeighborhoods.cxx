@@ -29,6 +29,7 @@ struct vtkPointCloudNeighborhoods::SearchGrid
   std::vector<int32_t> CellStart;   // first slot of each cell, then the number of slots
   std::vector<int32_t> SortedIds;   // point id of each slot, cell by cell, ascending in a cell
   std::vector<double> SortedPoints; // coordinates of each slot
+  std::vector<int32_t> SlotOf;      // slot of each point, -1 for invalid points
 
   vtkIdType Index(int i, int j, int k) const
   {
@@ -121,10 +122,8 @@ struct NearestNeighborsWorker
 struct GridNeighborsWorker
 {
   const vtkPointCloudNeighborhoods::SearchGrid* Grid;
-  vtkPoints* Points;
-  const unsigned char* Valid;
-  const vtkIdType* Ids;
-  const vtkIdType* Order; // rows in grid order, for cache locality
+  const int32_t* Slots;     // the queries' slots, in grid order
+  const vtkIdType* Rows;    // the table row of each of them
   int K;
   int32_t* Table;
   double* Nearest;
@@ -143,17 +142,17 @@ struct GridNeighborsWorker
   {
     std::vector<Candidate>& candidates = this->Candidates.Local();
     const auto& g = *this->Grid;
-    double x[3];
     for (vtkIdType o = begin; o < end; ++o)
     {
-      const vtkIdType r = this->Order[o];
-      const vtkIdType id = this->Ids[r];
+      // Queries in grid order read their coordinates in sequence, from the grid's own copy.
+      const int32_t slot = this->Slots[o];
+      const vtkIdType r = this->Rows[o];
+      const int32_t id = g.SortedIds[slot];
+      const double* x = g.SortedPoints.data() + 3 * static_cast<size_t>(slot);
       int32_t* row = this->Table + r * this->K;
       int n = 0;
       double nearest = 0.0;
-      if (this->Valid[id])
       {
-        this->Points->GetPoint(id, x);
         candidates.clear();
         const bool useHeap = this->K <= 8;
         int c[3];
@@ -493,11 +492,13 @@ void vtkPointCloudNeighborhoods::BuildGrid()
   g.SortedIds.resize(m);
   g.SortedPoints.resize(3 * static_cast<size_t>(m));
   std::vector<int32_t> next(g.CellStart.begin(), g.CellStart.end() - 1);
+  g.SlotOf.assign(n, -1);
   for (vtkIdType i = 0; i < n; ++i)
   {
     if (cellOf[i] >= 0)
     {
       const int32_t slot = next[cellOf[i]]++;
+      g.SlotOf[i] = slot;
       g.SortedIds[slot] = static_cast<int32_t>(i);
       points->GetPoint(i, g.SortedPoints.data() + 3 * static_cast<size_t>(slot));
     }
@@ -696,42 +697,62 @@ bool vtkPointCloudNeighborhoods::FindNearestNeighborsOnGrid(int k,
 {
   const SearchGrid& g = *this->Grid;
   const vtkIdType rows = static_cast<vtkIdType>(ids.size());
-  // The queries cell by cell, so that neighbouring queries read the same cells.
-  std::vector<std::pair<int64_t, vtkIdType>> keyed(rows);
-  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
-    double x[3];
-    int c[3];
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      int64_t key = -1;
-      if (this->Valid[ids[r]])
-      {
-        this->Points->GetPoint(ids[r], x);
-        g.CellOf(x, c);
-        key = g.Index(c[0], c[1], c[2]);
-      }
-      keyed[r] = { key, r };
-    }
-  });
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<vtkIdType> order(rows);
+  // The queries in grid order (by their slot), so that neighbouring queries read the same cells
+  // and their coordinates in sequence. Rows of invalid points are filled here.
+  const int32_t k32 = k;
+  std::vector<vtkIdType> rowOfSlot(g.SortedIds.size(), -1);
+  std::vector<std::pair<int32_t, vtkIdType>> repeated; // an id listed twice
   for (vtkIdType r = 0; r < rows; ++r)
   {
-    order[r] = keyed[r].second;
+    const int32_t slot = g.SlotOf[ids[r]];
+    if (slot < 0)
+    {
+      std::fill_n(table.data() + r * k32, k32, -1);
+      if (nearestDistances)
+      {
+        (*nearestDistances)[r] = 0.0;
+      }
+    }
+    else if (rowOfSlot[slot] >= 0)
+    {
+      repeated.emplace_back(slot, r);
+    }
+    else
+    {
+      rowOfSlot[slot] = r;
+    }
   }
-  std::vector<std::pair<int64_t, vtkIdType>>().swap(keyed);
-
-  GridNeighborsWorker worker{ &g, this->Points, this->Valid.data(), ids.data(), order.data(), k,
-    table.data(), nearestDistances ? nearestDistances->data() : nullptr, {} };
-  const vtkIdType batch = std::max<vtkIdType>(20000, rows / 50);
-  for (vtkIdType begin = 0; begin < rows; begin += batch)
+  std::vector<int32_t> slots;
+  std::vector<vtkIdType> order;
+  slots.reserve(rows);
+  order.reserve(rows);
+  for (size_t slot = 0; slot < rowOfSlot.size(); ++slot)
   {
-    const vtkIdType end = std::min(rows, begin + batch);
+    if (rowOfSlot[slot] >= 0)
+    {
+      slots.push_back(static_cast<int32_t>(slot));
+      order.push_back(rowOfSlot[slot]);
+    }
+  }
+  for (const auto& extra : repeated)
+  {
+    slots.push_back(extra.first);
+    order.push_back(extra.second);
+  }
+  std::vector<vtkIdType>().swap(rowOfSlot);
+  const vtkIdType queries = static_cast<vtkIdType>(slots.size());
+
+  GridNeighborsWorker worker{ &g, slots.data(), order.data(), k, table.data(),
+    nearestDistances ? nearestDistances->data() : nullptr, {} };
+  const vtkIdType batch = std::max<vtkIdType>(20000, queries / 50);
+  for (vtkIdType begin = 0; begin < queries; begin += batch)
+  {
+    const vtkIdType end = std::min(queries, begin + batch);
     vtkSMPTools::For(begin, end, worker);
     if (progressAlg)
     {
       progressAlg->UpdateProgress(progressStart +
-        (progressEnd - progressStart) * static_cast<double>(end) / static_cast<double>(rows));
+        (progressEnd - progressStart) * static_cast<double>(end) / static_cast<double>(queries));
       if (progressAlg->GetAbortExecute())
       {
         return false;

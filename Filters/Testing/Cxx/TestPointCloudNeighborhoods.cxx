@@ -75,7 +75,7 @@ vtkSmartPointer<vtkPoints> Cloud(const std::string& kind, int n, unsigned seed)
 
 void Compare(const std::string& kind, int k)
 {
-  vtkSmartPointer<vtkPoints> points = Cloud(kind, 20000, 3);
+  vtkSmartPointer<vtkPoints> points = Cloud(kind, 8000, 3);
   vtkNew<vtkPointCloudNeighborhoods> grid, locator;
   locator->SetSearchMethod(vtkPointCloudNeighborhoods::STATIC_POINT_LOCATOR);
   grid->Build(points);
