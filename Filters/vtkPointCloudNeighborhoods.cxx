@@ -155,6 +155,8 @@ struct GridNeighborsWorker
       {
         candidates.clear();
         const bool useHeap = this->K <= 8;
+        // Large k: once k candidates are known, nothing farther than the k-th can enter.
+        double bound = VTK_DOUBLE_MAX;
         int c[3];
         g.CellOf(x, c);
         for (int ring = 0;; ++ring)
@@ -177,7 +179,10 @@ struct GridNeighborsWorker
               const Candidate cand{ dx * dx + dy * dy + dz * dz, other };
               if (!useHeap)
               {
-                candidates.push_back(cand);
+                if (cand.D2 <= bound)
+                {
+                  candidates.push_back(cand);
+                }
               }
               else if (static_cast<int>(candidates.size()) < this->K)
               {
@@ -235,14 +240,24 @@ struct GridNeighborsWorker
               everything = false;
             }
           }
-          // Every candidate seen so far is kept: the k-th smallest decides whether the next
-          // ring can hold a nearer point (a selection per ring costs less than a candidates per point).
-          if (static_cast<int>(candidates.size()) >= this->K)
+          // Small k: a bounded max-heap of the k best. Large k: the candidates nearer than the
+          // k-th best so far are kept and the k-th selected once per ring, which costs less than
+          // a heap.
+          if (useHeap && static_cast<int>(candidates.size()) == this->K)
           {
-            std::nth_element(candidates.begin(), candidates.begin() + (this->K - 1), candidates.end());
-            if (everything || (gap > 0.0 && candidates[this->K - 1].D2 < gap * gap))
+            if (everything || (gap > 0.0 && candidates.front().D2 < gap * gap))
             {
-              candidates.resize(this->K);
+              break;
+            }
+          }
+          else if (!useHeap && static_cast<int>(candidates.size()) >= this->K)
+          {
+            std::nth_element(
+              candidates.begin(), candidates.begin() + (this->K - 1), candidates.end());
+            candidates.resize(this->K);
+            bound = candidates[this->K - 1].D2;
+            if (everything || (gap > 0.0 && bound < gap * gap))
+            {
               break;
             }
           }

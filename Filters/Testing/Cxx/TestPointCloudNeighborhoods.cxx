@@ -126,7 +126,7 @@ int TestPointCloudNeighborhoods(int, char*[])
   for (const char* kind :
     { "sheet", "sphere", "cluster", "outliers", "volume", "duplicates", "plane", "line" })
   {
-    for (int k : { 1, 15, 50 })
+    for (int k : { 1, 4, 8, 15, 50 })
     {
       Compare(kind, k);
     }
