@@ -70,6 +70,83 @@ struct Random
   }
 };
 
+Vec UniformDirection(Random& rng)
+{
+  Vec g;
+  double r = 0.0;
+  do
+  {
+    g = { rng.Gaussian(), rng.Gaussian(), rng.Gaussian() };
+    r = Norm(g);
+  } while (r < 1e-9);
+  return (1.0 / r) * g;
+}
+
+// The blob: in the unit direction u = (sin phi cos theta, sin phi sin theta, cos phi), radius
+// R (1 + BlobAmplitude f(u)) with the three low-order spherical harmonics
+//   f = sin^2 phi cos 2 theta + 0.7 sin 2 phi sin theta + 0.6 P3(cos phi)
+//     = x^2 - y^2 + 1.4 y z + 0.3 (5 z^3 - 3 z).
+// Radius 0.76 R to 1.17 R, smallest curvature radius about 0.6 R, normals within 26 degrees of u.
+constexpr double BlobAmplitude = 0.15;
+constexpr double BlobShapeBound = 1.0 + 0.7 + 0.6; // |f| on the unit sphere, term by term
+// |grad f| of the polynomial form on the unit sphere, term by term (it bounds grad_S f, its
+// tangential part).
+constexpr double BlobGradientBound = 2.0 + 0.7 * 2.0 + 0.6 * 6.0;
+
+// f(u), and the gradient of its polynomial form at u.
+double BlobShape(const Vec& u, Vec& gradient)
+{
+  const double x = u.X, y = u.Y, z = u.Z;
+  gradient = { 2.0 * x, -2.0 * y + 1.4 * z, 1.4 * y + 0.3 * (15.0 * z * z - 3.0) };
+  return x * x - y * y + 1.4 * y * z + 0.3 * (5.0 * z * z * z - 3.0 * z);
+}
+
+// The blob's radius r in the unit direction u, and the area density dA/dOmega =
+// r sqrt(r^2 + |grad_S r|^2) there (grad_S: the gradient along the unit sphere).
+double BlobRadius(const Vec& u, double R, double* areaDensity)
+{
+  Vec g;
+  const double r = R * (1.0 + BlobAmplitude * BlobShape(u, g));
+  if (areaDensity)
+  {
+    const Vec tangential = BlobAmplitude * R * (g - Dot(g, u) * u);
+    *areaDensity = r * std::sqrt(r * r + Dot(tangential, tangential));
+  }
+  return r;
+}
+
+// An upper bound of the area density over all directions, from the bounds of |f| and |grad f|.
+double BlobMaxAreaDensity(double R)
+{
+  const double r = 1.0 + BlobAmplitude * BlobShapeBound;
+  const double g = BlobAmplitude * BlobGradientBound;
+  return R * R * r * std::sqrt(r * r + g * g);
+}
+
+// The blob's area: the integral of the area density over the sphere of directions (midpoint rule
+// in phi and theta, relative error of order 1e-5; the area only sets the nominal spacing).
+double BlobArea(double R)
+{
+  const int nPhi = 256, nTheta = 512;
+  const double dPhi = Pi / nPhi, dTheta = 2.0 * Pi / nTheta;
+  double sum = 0.0;
+  for (int i = 0; i < nPhi; ++i)
+  {
+    const double phi = (i + 0.5) * dPhi;
+    double ring = 0.0;
+    for (int j = 0; j < nTheta; ++j)
+    {
+      const double theta = (j + 0.5) * dTheta;
+      const Vec u{ std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi) };
+      double density = 0.0;
+      BlobRadius(u, R, &density);
+      ring += density;
+    }
+    sum += ring * std::sin(phi);
+  }
+  return sum * dPhi * dTheta;
+}
+
 // A surface piece that can be sampled uniformly by area.
 struct Patch
 {
@@ -78,6 +155,9 @@ struct Patch
     Parallelogram, // Origin + a U + b V, a, b in [0, 1]
     Cylinder,      // axis along z through Origin, radius R, z in [Origin.Z + Z0, Origin.Z + Z1]
     Sphere,        // centre Origin, radius R
+    Triangle,      // Origin + a U + b V, a, b >= 0, a + b <= 1
+    Disk,          // in the plane z = Origin.Z, centre Origin, radius R
+    Blob,          // centre Origin, radius R (1 + BlobAmplitude BlobShape(u)) in direction u
   } Type;
   Vec Origin, U, V;
   double R = 0, Z0 = 0, Z1 = 0;
@@ -90,6 +170,12 @@ struct Patch
         return Norm(Cross(this->U, this->V));
       case Cylinder:
         return 2.0 * Pi * this->R * (this->Z1 - this->Z0);
+      case Triangle:
+        return 0.5 * Norm(Cross(this->U, this->V));
+      case Disk:
+        return Pi * this->R * this->R;
+      case Blob:
+        return BlobArea(this->R);
       default:
         return 4.0 * Pi * this->R * this->R;
     }
@@ -110,6 +196,40 @@ struct Patch
         const double t = 2.0 * Pi * rng.Uniform();
         const double z = this->Z0 + (this->Z1 - this->Z0) * rng.Uniform();
         return this->Origin + Vec{ this->R * std::cos(t), this->R * std::sin(t), z };
+      }
+      case Triangle:
+      {
+        // A point of the parallelogram, folded back into the triangle when beyond the diagonal.
+        double a = rng.Uniform();
+        double b = rng.Uniform();
+        if (a + b > 1.0)
+        {
+          a = 1.0 - a;
+          b = 1.0 - b;
+        }
+        return this->Origin + a * this->U + b * this->V;
+      }
+      case Disk:
+      {
+        const double r = this->R * std::sqrt(rng.Uniform());
+        const double t = 2.0 * Pi * rng.Uniform();
+        return this->Origin + Vec{ r * std::cos(t), r * std::sin(t), 0.0 };
+      }
+      case Blob:
+      {
+        // A uniform direction u, kept with probability dA/dOmega(u) / BlobMaxAreaDensity: the
+        // kept points are uniform over the blob's area.
+        const double bound = BlobMaxAreaDensity(this->R);
+        for (;;)
+        {
+          const Vec u = UniformDirection(rng);
+          double density = 0.0;
+          const double r = BlobRadius(u, this->R, &density);
+          if (rng.Uniform() * bound <= density)
+          {
+            return this->Origin + r * u;
+          }
+        }
       }
       default:
       {
@@ -215,6 +335,89 @@ Geometry MakeGeometry(int model, double size, double valleySlope)
       g.Curves.push_back({ true, Vec{}, Vec{}, r });
       return g;
     }
+    case vtkFeatureModelSource::BOX:
+    {
+      Geometry g;
+      const Vec e[3] = { { 1.0 * size, 0, 0 }, { 0, 0.7 * size, 0 }, { 0, 0, 0.5 * size } };
+      const Vec corner = -0.5 * (e[0] + e[1] + e[2]);
+      for (int k = 0; k < 3; ++k)
+      {
+        const Vec& a = e[(k + 1) % 3];
+        const Vec& b = e[(k + 2) % 3];
+        // The two faces normal to axis k, and the four edges along it.
+        g.Patches.push_back({ Patch::Parallelogram, corner, a, b });
+        g.Patches.push_back({ Patch::Parallelogram, corner + e[k], a, b });
+        for (int m = 0; m < 4; ++m)
+        {
+          const Vec start = corner + static_cast<double>(m & 1) * a + static_cast<double>(m >> 1) * b;
+          g.Curves.push_back({ false, start, start + e[k], 0.0 });
+        }
+      }
+      return g;
+    }
+    case vtkFeatureModelSource::CYLINDER:
+    {
+      Geometry g;
+      const double r = 0.3 * size, z = 0.3 * size;
+      Patch side{ Patch::Cylinder, Vec{}, Vec{}, Vec{} };
+      side.R = r;
+      side.Z0 = -z;
+      side.Z1 = z;
+      g.Patches.push_back(side);
+      for (const double c : { -z, z })
+      {
+        Patch cap{ Patch::Disk, Vec{ 0.0, 0.0, c }, Vec{}, Vec{} };
+        cap.R = r;
+        g.Patches.push_back(cap);
+        g.Curves.push_back({ true, Vec{ 0.0, 0.0, c }, Vec{}, r });
+      }
+      return g;
+    }
+    case vtkFeatureModelSource::BRACKET:
+    {
+      // The L profile in the (x, z) plane, counter-clockwise: bottom, free end, sloped and flat
+      // tops of the long leg, inner face, top and back of the upright.
+      const double zc = (-0.12 + 0.4 * std::tan(20.0 * Pi / 180.0)) * size; // the crease's height
+      const double x[7] = { -0.5 * size, 0.5 * size, 0.5 * size, 0.1 * size, -0.2 * size,
+        -0.2 * size, -0.5 * size };
+      const double z[7] = { -0.3 * size, -0.3 * size, -0.12 * size, zc, zc, 0.3 * size,
+        0.3 * size };
+      const double w = 0.5 * size; // along y
+      Geometry g;
+      for (int k = 0; k < 7; ++k)
+      {
+        const int l = (k + 1) % 7;
+        const Vec a{ x[k], -0.5 * w, z[k] };
+        const Vec b{ x[l], -0.5 * w, z[l] };
+        const Vec y{ 0.0, w, 0.0 };
+        g.Patches.push_back({ Patch::Parallelogram, a, b - a, y });
+        g.Curves.push_back({ false, a, a + y, 0.0 }); // the edge along y at the profile's vertex k
+        g.Curves.push_back({ false, a, b, 0.0 });     // the end caps' edges
+        g.Curves.push_back({ false, a + y, b + y, 0.0 });
+      }
+      // The end caps: the upright's rectangle, the long leg's rectangles under the free end's
+      // top and under the flat top, and the triangle under the sloped top.
+      for (const double y : { -0.5 * w, 0.5 * w })
+      {
+        g.Patches.push_back({ Patch::Parallelogram, Vec{ x[0], y, z[0] }, Vec{ x[4] - x[0], 0, 0 },
+          Vec{ 0, 0, z[5] - z[0] } });
+        g.Patches.push_back({ Patch::Parallelogram, Vec{ x[4], y, z[0] }, Vec{ x[1] - x[4], 0, 0 },
+          Vec{ 0, 0, z[2] - z[0] } });
+        g.Patches.push_back({ Patch::Parallelogram, Vec{ x[4], y, z[2] }, Vec{ x[3] - x[4], 0, 0 },
+          Vec{ 0, 0, z[3] - z[2] } });
+        g.Patches.push_back({ Patch::Triangle, Vec{ x[3], y, z[2] }, Vec{ x[2] - x[3], 0, 0 },
+          Vec{ 0, 0, z[3] - z[2] } });
+      }
+      return g;
+    }
+    case vtkFeatureModelSource::BLOB:
+    {
+      Geometry g;
+      Patch blob{ Patch::Blob, Vec{}, Vec{}, Vec{} };
+      blob.R = h;
+      g.Patches.push_back(blob);
+      return g;
+    }
     default:
     {
       Geometry g;
@@ -246,6 +449,14 @@ const char* vtkFeatureModelSource::GetModelName(int model)
       return "Model III";
     case SPHERE:
       return "Sphere";
+    case BOX:
+      return "Box";
+    case CYLINDER:
+      return "Cylinder";
+    case BRACKET:
+      return "Bracket";
+    case BLOB:
+      return "Blob";
     default:
       return "unknown";
   }
@@ -261,6 +472,14 @@ vtkIdType vtkFeatureModelSource::GetDefaultNumberOfPoints(int model)
       return 220000;
     case MODEL_III:
       return 130000;
+    case BOX:
+      return 100000;
+    case CYLINDER:
+      return 80000;
+    case BRACKET:
+      return 120000;
+    case BLOB:
+      return 100000;
     default:
       return 100000;
   }

@@ -3,8 +3,8 @@
  * @brief   Noisy point clouds of the paper's kind of test model, with exact ground truth.
  *
  * Generates one of the synthetic models of Huang et al. (2023), Section 3.3, as this project
- * reads their description (the paper shows them only in figures), or a smooth shape with no
- * feature:
+ * reads their description (the paper shows them only in figures), a smooth shape with no
+ * feature, or a closed CAD-like part that the default parameters were not tuned on:
  *
  * - MODEL_I ("a surface with a middle valley", 170,000 points by default): a square sheet of side
  *   Size with a V-shaped valley across its middle: flanks at ValleySlope (30 degrees) from the
@@ -19,11 +19,29 @@
  *   curved feature: the circle where they meet (dihedral angle 90 degrees), with the cylinder's
  *   curvature around it.
  * - SPHERE (100,000 points): a sphere of diameter Size, no feature at all.
+ * - BOX (100,000 points): a closed box of 1.0 x 0.7 x 0.5 Size (along x, y, z). Twelve straight
+ *   creases, its edges: all convex, 90 degrees; they meet by three at the eight corners.
+ * - CYLINDER (80,000 points): a closed cylinder of radius 0.3 Size and height 0.6 Size along z,
+ *   with flat caps. Two curved features: the caps' rims, circles of radius 0.3 Size (convex, 90
+ *   degrees); the side is smooth, curvature radius 0.3 Size.
+ * - BRACKET (120,000 points): a closed angle bracket, an L profile in the (x, z) plane extruded
+ *   0.5 Size along y with flat end caps. The long leg is 1.0 Size long along x (from x = -0.5 Size),
+ *   0.18 Size thick at its free end; its top is a face rising at 20 degrees from the free end for
+ *   0.4 Size, then a flat face 0.3 Size wide up to the upright, 0.3 Size thick and 0.6 Size high.
+ *   Twenty-one straight creases: along y, the bottom's two edges (convex, 90), the free end's top
+ *   (convex, 70), the crease between the two tops (convex, 20), the inner corner at the upright's
+ *   foot (concave, 90) and the upright's top two edges (convex, 90); and the fourteen edges of the
+ *   end caps (convex, 90).
+ * - BLOB (100,000 points): a smooth, star-shaped closed surface without any feature: a sphere of
+ *   diameter Size whose radius is modulated by 15% of three low-order spherical harmonics,
+ *   r = 0.5 Size (1 + 0.15 (sin^2 phi cos 2 theta + 0.7 sin 2 phi sin theta + 0.6 P3(cos phi))),
+ *   from 0.38 to 0.59 Size; principal curvature radii 0.29 Size and more.
  *
  * Sampling: points are drawn independently and uniformly over the surface area (a Poisson
- * sampling, like an unorganized scan), except that the band within DenseBandWidth nominal
- * spacings of a feature curve is sampled FeatureDensityFactor times as densely, as the paper's
- * re-scanned feature regions (1: uniform sampling). The nominal spacing is sqrt(area / number of
+ * sampling, like an unorganized scan; on the blob, uniform directions kept in proportion to the
+ * exact area density), except that the band within DenseBandWidth nominal spacings of a feature
+ * curve is sampled FeatureDensityFactor times as densely, as the paper's re-scanned feature
+ * regions (1: uniform sampling). The nominal spacing is sqrt(area / number of
  * points). Then every point is moved by isotropic Gaussian noise of standard deviation
  * NoiseFactor * s, where s is the mean nearest-neighbour distance of the clean cloud
  * (EVALUATION.md: sigma = 0.5 s by default). Everything follows from Seed: the same parameters give
@@ -31,7 +49,8 @@
  *
  * Output: a vtkPolyData with one vertex cell per point and the point arrays
  * - `FeatureDistance` (double): the clean (pre-noise) distance delta from the point to the
- *   nearest feature curve; VTK_FLOAT_MAX on a model without features.
+ *   nearest feature curve (exact, the circles' included); VTK_FLOAT_MAX on a model without
+ *   features (SPHERE, BLOB).
  * - `GroundTruth` (uint8): 1 for the positives of EVALUATION.md, delta <= 2 s.
  * and the field data `CleanMeanSpacing` (s) and `NoiseSigma`.
  *
@@ -56,26 +75,35 @@ public:
     MODEL_II = 1,  ///< plateau with a gentle ridge on its flat top
     MODEL_III = 2, ///< sheet crossed by a cylinder
     SPHERE = 3,    ///< no feature
+    BOX = 4,       ///< closed box: 12 convex 90-degree edges
+    CYLINDER = 5,  ///< closed cylinder: 2 circular convex 90-degree rims
+    BRACKET = 6,   ///< closed L bracket: convex and concave 90-degree edges, a 20-degree crease
+    BLOB = 7,      ///< smooth bumpy closed surface, no feature
   };
 
   ///@{
   /** Which model. Default MODEL_I. */
-  vtkSetClampMacro(Model, int, MODEL_I, SPHERE);
+  vtkSetClampMacro(Model, int, MODEL_I, BLOB);
   vtkGetMacro(Model, int);
   void SetModelToModelI() { this->SetModel(MODEL_I); }
   void SetModelToModelII() { this->SetModel(MODEL_II); }
   void SetModelToModelIII() { this->SetModel(MODEL_III); }
   void SetModelToSphere() { this->SetModel(SPHERE); }
+  void SetModelToBox() { this->SetModel(BOX); }
+  void SetModelToCylinder() { this->SetModel(CYLINDER); }
+  void SetModelToBracket() { this->SetModel(BRACKET); }
+  void SetModelToBlob() { this->SetModel(BLOB); }
   ///@}
 
-  /** The model's name ("Model I", ...), and its default number of points. */
+  /** The model's name ("Model I", ..., "Box", ...), and its default number of points. */
   static const char* GetModelName(int model);
   static vtkIdType GetDefaultNumberOfPoints(int model);
 
   ///@{
   /**
    * Number of points; 0 (default) takes the model's own count (170,000, 220,000, 130,000 for
-   * Models I-III as in the paper's Table 1; 100,000 for the sphere).
+   * Models I-III as in the paper's Table 1; 100,000 for the sphere, the box and the blob; 80,000
+   * for the cylinder; 120,000 for the bracket).
    */
   vtkSetClampMacro(NumberOfPoints, vtkIdType, 0, VTK_INT_MAX);
   vtkGetMacro(NumberOfPoints, vtkIdType);
@@ -103,7 +131,10 @@ public:
   ///@}
 
   ///@{
-  /** Size of the model (sheet side, sphere diameter) in the output's units. Default 100. */
+  /**
+   * Size of the model (sheet side, sphere and blob diameter, the box's and the bracket's length)
+   * in the output's units. Default 100.
+   */
   vtkSetClampMacro(Size, double, 1e-12, 1e12);
   vtkGetMacro(Size, double);
   ///@}
