@@ -7,6 +7,7 @@
 // - The labelled PCEDNet clouds (coordinates only given to the detectors): precision, recall and
 //   MCC per model, medians per folder and over all models.
 // Prints text tables and writes every row to a CSV file.
+#include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFeaturePointEvaluation.h"
@@ -49,6 +50,7 @@ std::vector<Method> Methods()
     { "SSI", [] { return vtkSmartPointer<vtkSmoothShrinkIndexFeatures>::New(); } },
     { "Wang&Yuan", [] { return vtkSmartPointer<vtkCurvatureDensityFeatures>::New(); } },
     { "Ours", [] { return vtkSmartPointer<vtkFeaturePointExtraction>::New(); } },
+    { "Crease", [] { return vtkSmartPointer<vtkCreaseVotingFeatures>::New(); } },
   };
 }
 

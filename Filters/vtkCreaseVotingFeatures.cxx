@@ -1,0 +1,406 @@
+#include "vtkCreaseVotingFeatures.h"
+
+#include "vtkFeaturePointsLocalPCA.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointCloudNeighborhoods.h"
+#include "vtkPointSet.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+vtkStandardNewMacro(vtkCreaseVotingFeatures);
+
+namespace
+{
+// sigma is never taken below this fraction of the mean spacing (noise-free clouds).
+constexpr double NoiseFloor = 0.05;
+// Rounds of the two-plane assignment.
+constexpr int MaximumRounds = 8;
+// Neighbours through which the hysteresis step connects points.
+constexpr int ConnectionNeighbors = 8;
+
+// Least-squares plane of the points with label `side` (or all when side < 0): centroid, unit
+// normal, residual sum of squares. Returns false with fewer than 3 points.
+bool FitPlane(const std::vector<Eigen::Vector3d>& p, const std::vector<unsigned char>& label,
+  int side, Eigen::Vector3d& centroid, Eigen::Vector3d& normal, double& rss)
+{
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int m = 0;
+  for (size_t j = 0; j < p.size(); ++j)
+  {
+    if (side < 0 || label[j] == side)
+    {
+      sum += p[j];
+      ++m;
+    }
+  }
+  if (m < 3)
+  {
+    return false;
+  }
+  centroid = sum / m;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (size_t j = 0; j < p.size(); ++j)
+  {
+    if (side < 0 || label[j] == side)
+    {
+      const Eigen::Vector3d v = p[j] - centroid;
+      cov += v * v.transpose();
+    }
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(cov);
+  normal = solver.eigenvectors().col(0);
+  const double length = normal.norm();
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return false;
+  }
+  normal /= length;
+  rss = std::max(solver.eigenvalues()[0], 0.0);
+  return true;
+}
+
+struct CreaseFit
+{
+  double Gain = 0.0;  // RSS_1 - RSS_2, in squared units
+  double RSS2 = 0.0;  // residual of the two planes
+  float Angle = 0.0f; // degrees
+  bool HasLine = false;
+  double LinePoint[3] = { 0.0, 0.0, 0.0 }; // relative to the point
+  double LineDirection[3] = { 0.0, 0.0, 0.0 };
+};
+
+// Two-plane fit of one neighbourhood: p[0] is the point (the origin), nr the normals.
+CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& nr,
+  std::vector<unsigned char>& label, std::vector<unsigned char>& next)
+{
+  CreaseFit fit;
+  const size_t m = p.size();
+  label.assign(m, 0);
+  Eigen::Vector3d c1, n1;
+  double rss1 = 0.0;
+  if (m < 8 || !FitPlane(p, label, -1, c1, n1, rss1))
+  {
+    return fit;
+  }
+  // Split by the direction in which the (consistently oriented) normals vary most.
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (size_t j = 0; j < m; ++j)
+  {
+    mean += nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j];
+  }
+  mean /= static_cast<double>(m);
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (size_t j = 0; j < m; ++j)
+  {
+    const Eigen::Vector3d v = (nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j]) - mean;
+    spread += v * v.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(spread);
+  const Eigen::Vector3d e = solver.eigenvectors().col(2);
+  for (size_t j = 0; j < m; ++j)
+  {
+    const Eigen::Vector3d v = (nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j]) - mean;
+    label[j] = v.dot(e) >= 0.0 ? 0 : 1;
+  }
+  // Planes and nearest-plane assignment until the split settles.
+  Eigen::Vector3d ca, na, cb, nb;
+  double ra = 0.0, rb = 0.0, rss2 = rss1;
+  bool fitted = false;
+  next.resize(m);
+  for (int round = 0; round < MaximumRounds; ++round)
+  {
+    if (!FitPlane(p, label, 0, ca, na, ra) || !FitPlane(p, label, 1, cb, nb, rb))
+    {
+      break;
+    }
+    fitted = true;
+    double rss = 0.0;
+    bool changed = false;
+    for (size_t j = 0; j < m; ++j)
+    {
+      const double da = (p[j] - ca).dot(na);
+      const double db = (p[j] - cb).dot(nb);
+      next[j] = da * da <= db * db ? 0 : 1;
+      rss += std::min(da * da, db * db);
+      changed = changed || next[j] != label[j];
+    }
+    rss2 = rss;
+    if (!changed)
+    {
+      break;
+    }
+    label.swap(next);
+  }
+  if (!fitted)
+  {
+    return fit;
+  }
+  fit.RSS2 = rss2;
+  fit.Gain = std::max(rss1 - rss2, 0.0);
+  Eigen::Vector3d t = na.cross(nb);
+  const double sine = t.norm();
+  fit.Angle = static_cast<float>(std::asin(std::min(sine, 1.0)) * 180.0 / 3.14159265358979323846);
+  if (!(sine > 1e-6))
+  {
+    return fit;
+  }
+  t /= sine;
+  // The point of the line nearest the fitted point: na.x = na.ca, nb.x = nb.cb, t.x = 0.
+  Eigen::Matrix3d a;
+  a.row(0) = na.transpose();
+  a.row(1) = nb.transpose();
+  a.row(2) = t.transpose();
+  const Eigen::Vector3d x = a.colPivHouseholderQr().solve(Eigen::Vector3d(na.dot(ca), nb.dot(cb), 0.0));
+  if (!x.allFinite())
+  {
+    return fit;
+  }
+  fit.HasLine = true;
+  for (int c = 0; c < 3; ++c)
+  {
+    fit.LinePoint[c] = x[c];
+    fit.LineDirection[c] = t[c];
+  }
+  return fit;
+}
+
+struct Scratch
+{
+  std::vector<double> Q;
+  std::vector<Eigen::Vector3d> P, N;
+  std::vector<unsigned char> Label, Next;
+};
+} // namespace
+
+vtkCreaseVotingFeatures::vtkCreaseVotingFeatures()
+{
+  this->ThresholdMode = ABSOLUTE;
+  this->Threshold = 0.5;
+}
+
+vtkCreaseVotingFeatures::~vtkCreaseVotingFeatures() = default;
+
+int vtkCreaseVotingFeatures::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  this->ResetFigures();
+  this->NoiseSigma = 0.0;
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkPoints* points = input->GetPoints();
+  auto normals = featurepoints::NewZeroArray<vtkFloatArray>("Normals", 3, n);
+  auto votes = featurepoints::NewZeroArray<vtkFloatArray>("CreaseVotes", 1, n);
+  auto gains = featurepoints::NewZeroArray<vtkFloatArray>("CreaseGain", 1, n);
+  auto angles = featurepoints::NewZeroArray<vtkFloatArray>("CreaseAngle", 1, n);
+  auto mask = featurepoints::NewZeroArray<vtkUnsignedCharArray>("FeatureMask", 1, n);
+  auto finish = [&]() {
+    return this->AssembleOutput(input, output,
+      { normals.GetPointer(), votes.GetPointer(), gains.GetPointer(), angles.GetPointer() }, mask);
+  };
+
+  const int k = std::max(this->NumberOfNeighbors, this->NormalNeighbors);
+  vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+  std::vector<vtkIdType> ids;
+  std::vector<int32_t> table;
+  if (!this->SearchAllPoints(points, n, k, neighborhoods, ids, table, 0.4))
+  {
+    return finish();
+  }
+  const double d = this->MeanSpacing;
+  const vtkIdType rows = static_cast<vtkIdType>(ids.size());
+  std::vector<vtkIdType> rowOf(n, -1);
+  for (vtkIdType r = 0; r < rows; ++r)
+  {
+    rowOf[ids[r]] = r;
+  }
+
+  // Step 1a: PCA normals.
+  this->BeginStage("normals");
+  const double* center = neighborhoods->GetCenter();
+  float* normal = normals->GetPointer(0);
+  const int kn = this->NormalNeighbors;
+  vtkSMPThreadLocal<std::vector<double>> normalScratch;
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<double>& q = normalScratch.Local();
+    q.resize(3 * static_cast<size_t>(kn));
+    double x[3], lambda[3], nrm[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = ids[r];
+      const int32_t* row = table.data() + r * k;
+      const int count = featurepoints::RowLength(row, kn);
+      points->GetPoint(id, x);
+      featurepoints::GatherRelative(points, id, row, count, q.data(), x);
+      const double outward[3] = { x[0] - center[0], x[1] - center[1], x[2] - center[2] };
+      featurepoints::LocalPCA(q.data(), count, true, outward, lambda, nrm);
+      for (int c = 0; c < 3; ++c)
+      {
+        normal[3 * id + c] = static_cast<float>(nrm[c]);
+      }
+    }
+  });
+  this->UpdateProgress(0.5);
+
+  // Steps 1b-3: two-plane fits.
+  this->BeginStage("crease fits");
+  const int kf = this->NumberOfNeighbors;
+  std::vector<CreaseFit> fits(static_cast<size_t>(rows));
+  vtkSMPThreadLocal<Scratch> scratch;
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    Scratch& s = scratch.Local();
+    s.Q.resize(3 * static_cast<size_t>(kf));
+    double x[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = ids[r];
+      const int32_t* row = table.data() + r * k;
+      const int count = featurepoints::RowLength(row, kf);
+      featurepoints::GatherRelative(points, id, row, count, s.Q.data(), x);
+      s.P.resize(static_cast<size_t>(count) + 1);
+      s.N.resize(static_cast<size_t>(count) + 1);
+      s.P[0].setZero();
+      s.N[0] = Eigen::Vector3d(normal[3 * id], normal[3 * id + 1], normal[3 * id + 2]);
+      for (int j = 0; j < count; ++j)
+      {
+        s.P[j + 1] = Eigen::Vector3d(s.Q[3 * j], s.Q[3 * j + 1], s.Q[3 * j + 2]);
+        const float* nj = normal + 3 * static_cast<vtkIdType>(row[j]);
+        s.N[j + 1] = Eigen::Vector3d(nj[0], nj[1], nj[2]);
+      }
+      fits[r] = FitCrease(s.P, s.N, s.Label, s.Next);
+    }
+  });
+  this->UpdateProgress(0.8);
+
+  // sigma^2 and the vote's gate, from the whole cloud.
+  this->BeginStage("vote");
+  std::vector<double> values(static_cast<size_t>(rows));
+  for (vtkIdType r = 0; r < rows; ++r)
+  {
+    const int count = featurepoints::RowLength(table.data() + r * k, kf);
+    values[r] = count + 1 > 6 ? fits[r].RSS2 / (count + 1 - 6) : 0.0;
+  }
+  auto median = [](std::vector<double>& v) {
+    if (v.empty())
+    {
+      return 0.0;
+    }
+    auto middle = v.begin() + v.size() / 2;
+    std::nth_element(v.begin(), middle, v.end());
+    return *middle;
+  };
+  const double variance = std::max(median(values), NoiseFloor * NoiseFloor * d * d);
+  this->NoiseSigma = std::sqrt(variance);
+  float* gain = gains->GetPointer(0);
+  float* angle = angles->GetPointer(0);
+  for (vtkIdType r = 0; r < rows; ++r)
+  {
+    values[r] = fits[r].Gain / variance;
+    gain[ids[r]] = static_cast<float>(values[r]);
+    angle[ids[r]] = fits[r].Angle;
+  }
+  const double gate = std::max(median(values), 1.0) * variance;
+
+  // Step 4: votes.
+  const double minAngle = this->MinimumAngle;
+  const double band2 = this->BandWidth * d * this->BandWidth * d;
+  float* vote = votes->GetPointer(0);
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    double x[3], y[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = ids[r];
+      const int32_t* row = table.data() + r * k;
+      const int count = featurepoints::RowLength(row, kf);
+      points->GetPoint(id, x);
+      int in = 0;
+      for (int j = -1; j < count; ++j)
+      {
+        const vtkIdType other = j < 0 ? id : static_cast<vtkIdType>(row[j]);
+        const CreaseFit& f = fits[rowOf[other]];
+        if (!f.HasLine || !(f.Gain > gate) || f.Angle < minAngle)
+        {
+          continue;
+        }
+        points->GetPoint(other, y);
+        double v[3];
+        for (int c = 0; c < 3; ++c)
+        {
+          v[c] = x[c] - y[c] - f.LinePoint[c];
+        }
+        const double along =
+          v[0] * f.LineDirection[0] + v[1] * f.LineDirection[1] + v[2] * f.LineDirection[2];
+        if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] - along * along <= band2)
+        {
+          ++in;
+        }
+      }
+      vote[id] = static_cast<float>(in) / static_cast<float>(count + 1);
+    }
+  });
+  this->ApplyThreshold(vote, ids, nullptr, nullptr, mask->GetPointer(0));
+
+  // Step 6: hysteresis. Points whose votes exceed GrowThreshold join the feature points they are
+  // connected to through such points (each point linked to its ConnectionNeighbors nearest).
+  // The result is a set of connected components, so it does not depend on the visiting order.
+  if (this->GrowThreshold < this->ThresholdUsed)
+  {
+    unsigned char* m = mask->GetPointer(0);
+    std::vector<vtkIdType> stack;
+    for (vtkIdType r = 0; r < rows; ++r)
+    {
+      if (m[ids[r]])
+      {
+        stack.push_back(r);
+      }
+    }
+    const int kc = std::min(ConnectionNeighbors, k);
+    while (!stack.empty())
+    {
+      const vtkIdType r = stack.back();
+      stack.pop_back();
+      const int32_t* row = table.data() + r * k;
+      for (int j = 0; j < kc && row[j] >= 0; ++j)
+      {
+        const vtkIdType other = row[j];
+        if (!m[other] && vote[other] > this->GrowThreshold)
+        {
+          m[other] = 1;
+          ++this->NumberOfFeaturePoints;
+          stack.push_back(rowOf[other]);
+        }
+      }
+    }
+  }
+  this->UpdateProgress(1.0);
+  return finish();
+}
+
+void vtkCreaseVotingFeatures::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
+  os << indent << "NormalNeighbors: " << this->NormalNeighbors << "\n";
+  os << indent << "GrowThreshold: " << this->GrowThreshold << "\n";
+  os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
+  os << indent << "BandWidth: " << this->BandWidth << "\n";
+  os << indent << "NoiseSigma: " << this->NoiseSigma << "\n";
+}
