@@ -22,22 +22,26 @@ inline vtkFloatArray* Floats(vtkPolyData* out, const char* name)
 // Every value of every float array of the output is finite.
 inline bool AllFinite(vtkPolyData* out)
 {
-  for (const char* name : { "Normals", "SSI", "PDI", "F" })
+  // Every floating-point array of the output's point data, and at least one such array.
+  int arrays = 0;
+  vtkPointData* pd = out->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
   {
-    vtkFloatArray* a = Floats(out, name);
-    if (!a)
+    vtkDataArray* array = pd->GetArray(a);
+    if (!array || (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE))
     {
-      return false;
+      continue;
     }
-    for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+    ++arrays;
+    for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
     {
-      if (!std::isfinite(a->GetValue(i)))
+      if (!std::isfinite(array->GetVariantValue(i).ToDouble()))
       {
         return false;
       }
     }
   }
-  return true;
+  return arrays > 0;
 }
 
 inline long CountSet(vtkUnsignedCharArray* a)
