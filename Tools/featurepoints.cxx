@@ -1,5 +1,6 @@
 // featurepoints: feature points (sharp edges, creases, corners) of a point cloud file, from the
-// shell. Reads PLY, VTP, VTU, legacy VTK, PTS, XYZ/TXT or CSV; runs the proposed method (Huang et
+// shell. Reads PLY, VTP, VTU, legacy VTK, PTS, XYZ/TXT or CSV; runs the project's default detector
+// (crease: two-plane crease fits and a neighbourhood vote), the paper's method (huang2023: Huang et
 // al. 2023) or one of its baselines; writes the cloud with its scores and FeatureMask as VTP, VTK,
 // PLY or CSV; optionally renders a picture offscreen. `featurepoints --help` lists every option.
 //
@@ -8,6 +9,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkLookupTable.h"
@@ -69,16 +71,46 @@ double Seconds(Clock::time_point since)
 // ---------------------------------------------------------------------------------------------
 // Methods and their options
 
+// The method run when --method is not given.
+constexpr const char* DefaultMethod = "crease";
+
 struct Method
 {
   const char* Name;
   const char* Description;
   std::function<vtkSmartPointer<vtkFeaturePointDetector>()> Create;
+  // Optional, for the summary: what the method adds to its "method" line (after the mean
+  // spacing), and the score above which points grown from the feature points join them after
+  // the threshold (hysteresis; NaN when the run grew nothing).
+  std::function<std::string(vtkFeaturePointDetector*)> Details = nullptr;
+  std::function<double(vtkFeaturePointDetector*)> GrowThreshold = nullptr;
 };
+
+vtkCreaseVotingFeatures* Crease(vtkFeaturePointDetector* f)
+{
+  return vtkCreaseVotingFeatures::SafeDownCast(f);
+}
 
 const std::vector<Method>& Methods()
 {
   static const std::vector<Method> methods = {
+    { "crease",
+      "the default: two-plane crease fits and a neighbourhood vote; score CreaseVotes, the "
+      "fraction of the neighbourhood whose fitted crease line passes near the point; a feature "
+      "point has a majority (> 0.5), then the features grow through points above "
+      "--grow-threshold",
+      [] { return vtkSmartPointer<vtkCreaseVotingFeatures>::New(); },
+      [](vtkFeaturePointDetector* f) {
+        std::ostringstream s;
+        s << ", noise sigma " << std::setprecision(6) << Crease(f)->GetNoiseSigma();
+        return s.str();
+      },
+      [](vtkFeaturePointDetector* f) {
+        // The filter grows the features only when GrowThreshold is below the threshold used.
+        return Crease(f)->GetGrowThreshold() < f->GetThresholdUsed()
+          ? Crease(f)->GetGrowThreshold()
+          : std::nan("");
+      } },
     { "huang2023",
       "the proposed method: SSI and PDI mixed into F, voxel density pre-filter (Huang, Chen, "
       "Zhang, Lu 2023)",
@@ -116,7 +148,7 @@ struct FilterOption
   bool Integer;
   std::map<std::string, int> Keywords; // for keyword options: word -> value
   std::function<void(vtkFeaturePointDetector*, double)> Apply;
-  std::function<double(vtkFeaturePointDetector*)> Default;
+  std::function<double(vtkFeaturePointDetector*)> Default; // NaN: no number ("automatic")
   const char* Help;
 };
 
@@ -138,23 +170,44 @@ const std::vector<FilterOption>& FilterOptions()
   const std::vector<std::string> ours = { "huang2023", "ssi" };
   static const std::vector<FilterOption> options = {
     { "threshold-sigmas", "Z", {}, 0.0, 1000.0, false, {},
-      [](vtkFeaturePointDetector* f, double v) { f->SetThresholdSigmas(v); },
+      [](vtkFeaturePointDetector* f, double v) {
+        f->SetThresholdModeToAutomatic(); // crease thresholds its votes absolutely by default
+        f->SetThresholdSigmas(v);
+      },
       [](vtkFeaturePointDetector* f) { return f->GetThresholdSigmas(); },
-      "automatic threshold: median score + Z robust standard deviations" },
+      "automatic threshold: median score + Z robust standard deviations (the default rule of "
+      "every method but crease)" },
     { "threshold", "VALUE", {}, -1e300, 1e300, false, {},
       [](vtkFeaturePointDetector* f, double v) {
         f->SetThresholdModeToAbsolute();
         f->SetThreshold(v);
       },
-      nullptr, "absolute threshold on the method's score instead of the automatic one" },
+      [](vtkFeaturePointDetector* f) {
+        return f->GetThresholdMode() == vtkFeaturePointDetector::ABSOLUTE ? f->GetThreshold()
+                                                                          : std::nan("");
+      },
+      "absolute threshold on the method's score instead of the automatic one" },
     { "alpha", "A", ours, 0.0, 1.0, false, {},
       [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetAlpha(v); },
       [](vtkFeaturePointDetector* f) { return Extraction(f)->GetAlpha(); },
       "alpha of Eq. 1, weight of the SSI term against the density term" },
-    { "normal-k", "K", ours, 3, 1000, true, {},
-      [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetNormalNeighbors(int(v)); },
-      [](vtkFeaturePointDetector* f) { return double(Extraction(f)->GetNormalNeighbors()); },
-      "neighbours of the PCA normal (Eq. 3)" },
+    { "normal-k", "K", { "huang2023", "ssi", "crease" }, 3, 1000, true, {},
+      [](vtkFeaturePointDetector* f, double v) {
+        if (Extraction(f))
+        {
+          Extraction(f)->SetNormalNeighbors(int(v));
+        }
+        else
+        {
+          Crease(f)->SetNormalNeighbors(int(v));
+        }
+      },
+      [](vtkFeaturePointDetector* f) {
+        return double(Extraction(f) ? Extraction(f)->GetNormalNeighbors()
+                                    : Crease(f)->GetNormalNeighbors());
+      },
+      "neighbours of the PCA normal (Eq. 3; crease: the normals that seed its two-plane "
+      "split)" },
     { "ssi-k", "K", ours, 1, 1000, true, {},
       [](vtkFeaturePointDetector* f, double v) { Extraction(f)->SetSSINeighbors(int(v)); },
       [](vtkFeaturePointDetector* f) { return double(Extraction(f)->GetSSINeighbors()); },
@@ -222,6 +275,24 @@ const std::vector<FilterOption>& FilterOptions()
       [](vtkFeaturePointDetector* f, double v) { CurvatureDensity(f)->SetDensityWeight(v); },
       [](vtkFeaturePointDetector* f) { return CurvatureDensity(f)->GetDensityWeight(); },
       "weight of the density indicator" },
+    { "crease-k", "K", { "crease" }, 8, 1000, true, {},
+      [](vtkFeaturePointDetector* f, double v) { Crease(f)->SetNumberOfNeighbors(int(v)); },
+      [](vtkFeaturePointDetector* f) { return double(Crease(f)->GetNumberOfNeighbors()); },
+      "neighbours of each two-plane fit and of each vote" },
+    { "band-width", "D", { "crease" }, 0.01, 1000.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { Crease(f)->SetBandWidth(v); },
+      [](vtkFeaturePointDetector* f) { return Crease(f)->GetBandWidth(); },
+      "how far from a fitted crease line a point still counts as on it, in mean spacings" },
+    { "min-angle", "DEGREES", { "crease" }, 0.0, 90.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { Crease(f)->SetMinimumAngle(v); },
+      [](vtkFeaturePointDetector* f) { return Crease(f)->GetMinimumAngle(); },
+      "smallest bend that counts as a crease: a fit whose two planes meet at a smaller angle "
+      "casts no vote" },
+    { "grow-threshold", "V", { "crease" }, 0.0, 1.0, false, {},
+      [](vtkFeaturePointDetector* f, double v) { Crease(f)->SetGrowThreshold(v); },
+      [](vtkFeaturePointDetector* f) { return Crease(f)->GetGrowThreshold(); },
+      "hysteresis: a point with more than V of the votes joins the feature points it is "
+      "connected to through such points (off at or above the threshold)" },
   };
   return options;
 }
@@ -245,16 +316,15 @@ std::string FormatNumber(double v)
   return s.str();
 }
 
-std::string DefaultText(const FilterOption& o)
+// The option's default for one method, from a filter made for the purpose, so that the help
+// never disagrees with the library.
+std::string DefaultText(const FilterOption& o, const Method& method)
 {
-  if (!o.Default)
+  const double v = o.Default ? o.Default(method.Create()) : std::nan("");
+  if (std::isnan(v))
   {
     return "automatic";
   }
-  // The default of the first method the option applies to, from a filter made for the purpose,
-  // so that the help never disagrees with the library.
-  const Method* method = FindMethod(o.Methods.empty() ? "huang2023" : o.Methods.front());
-  const double v = o.Default(method->Create());
   for (const auto& keyword : o.Keywords)
   {
     if (keyword.second == static_cast<int>(v))
@@ -263,6 +333,53 @@ std::string DefaultText(const FilterOption& o)
     }
   }
   return FormatNumber(v);
+}
+
+// The option's default over the methods it applies to: the value most of them share, and
+// "; METHOD: VALUE" for the others, if any (e.g. "automatic" and "; crease: 0.5").
+std::pair<std::string, std::string> DefaultText(const FilterOption& o)
+{
+  std::vector<std::pair<std::string, std::vector<std::string>>> groups; // value, its methods
+  for (const Method& m : Methods())
+  {
+    if (!o.Methods.empty() && std::find(o.Methods.begin(), o.Methods.end(), m.Name) == o.Methods.end())
+    {
+      continue;
+    }
+    const std::string text = DefaultText(o, m);
+    auto group = std::find_if(groups.begin(), groups.end(),
+      [&](const std::pair<std::string, std::vector<std::string>>& g) { return g.first == text; });
+    if (group == groups.end())
+    {
+      groups.emplace_back(text, std::vector<std::string>());
+      group = groups.end() - 1;
+    }
+    group->second.emplace_back(m.Name);
+  }
+  if (groups.empty())
+  {
+    return {};
+  }
+  const auto most = std::max_element(groups.begin(), groups.end(),
+    [](const std::pair<std::string, std::vector<std::string>>& a,
+      const std::pair<std::string, std::vector<std::string>>& b) {
+      return a.second.size() < b.second.size();
+    });
+  std::string others;
+  for (auto g = groups.begin(); g != groups.end(); ++g)
+  {
+    if (g == most)
+    {
+      continue;
+    }
+    std::string methods;
+    for (const std::string& m : g->second)
+    {
+      methods += (methods.empty() ? "" : ", ") + m;
+    }
+    others += "; " + methods + ": " + g->first;
+  }
+  return { most->first, others };
 }
 
 // Prints `text` wrapped to 78 columns, every line indented by `indent` spaces.
@@ -288,10 +405,12 @@ void PrintWrapped(const std::string& text, int indent)
 void PrintHelp()
 {
   std::printf(
-    "Usage: featurepoints INPUT OUTPUT [options]\n"
+    "Usage: featurepoints INPUT OUTPUT [options]   (default: --method %s)\n"
     "\n"
     "Finds the feature points (sharp edges, creases, corners) of a point cloud and writes the\n"
-    "cloud with its scores and a FeatureMask array (1 for a feature point).\n"
+    "cloud with its scores and a FeatureMask array (1 for a feature point). The default method,\n"
+    "%s, is built to work with its default parameters on any cloud; --method huang2023 runs\n"
+    "the paper's method (Huang, Chen, Zhang, Lu 2023).\n"
     "\n"
     "INPUT   %s (PLY: ASCII or binary, any vertex\n"
     "        properties, faces ignored; CSV/XYZ/TXT: with or without a header line)\n"
@@ -299,9 +418,9 @@ void PrintHelp()
     "        numeric array as vertex properties; CSV: a header line, then one line per point)\n"
     "\n"
     "General options:\n"
-    "  --method NAME         the method (default huang2023):\n",
-    vtkPointCloudIO::GetReadableExtensions().c_str(),
-    vtkPointCloudIO::GetWritableExtensions().c_str());
+    "  --method NAME         the method (default %s):\n",
+    DefaultMethod, DefaultMethod, vtkPointCloudIO::GetReadableExtensions().c_str(),
+    vtkPointCloudIO::GetWritableExtensions().c_str(), DefaultMethod);
   for (const Method& m : Methods())
   {
     std::printf("      %s\n", m.Name);
@@ -332,7 +451,8 @@ void PrintHelp()
       range = ", " + FormatNumber(o.Min) + " to " + (o.Max > 1e299 ? "any" : FormatNumber(o.Max));
     }
     std::printf("  --%s %s\n", o.Name, o.Metavar);
-    PrintWrapped(std::string(o.Help) + " [" + DefaultText(o) + range + "]" +
+    const auto defaults = DefaultText(o);
+    PrintWrapped(std::string(o.Help) + " [" + defaults.first + range + defaults.second + "]" +
         (methods.empty() ? "" : "; " + methods),
       8);
   }
@@ -623,7 +743,7 @@ bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
 struct Settings
 {
   std::string Input, Output, Screenshot;
-  std::string MethodName = "huang2023";
+  std::string MethodName = DefaultMethod;
   std::vector<std::pair<const FilterOption*, double>> FilterValues;
   bool FeaturesOnly = false;
   int Width = 1200, Height = 900;
@@ -798,6 +918,16 @@ Settings ParseArguments(int argc, char* argv[])
   }
   s.Input = positional[0];
   s.Output = positional[1];
+  // --threshold-sigmas asks for the automatic rule, --threshold for an absolute one.
+  const auto isGiven = [&](const char* option) {
+    return std::any_of(s.FilterValues.begin(), s.FilterValues.end(),
+      [&](const std::pair<const FilterOption*, double>& v) { return v.first->Name == std::string(option); });
+  };
+  if (isGiven("threshold") && isGiven("threshold-sigmas"))
+  {
+    Fail(ExitUsage, "options --threshold and --threshold-sigmas exclude each other (absolute or "
+                    "automatic threshold)");
+  }
   for (const auto& value : s.FilterValues)
   {
     const auto& methods = value.first->Methods;
@@ -935,6 +1065,7 @@ int main(int argc, char* argv[])
     Fail(ExitFailure, s.Input + ": " + filterError->Message);
   }
   vtkPolyData* result = filter->GetOutput();
+  const double grown = method->GrowThreshold ? method->GrowThreshold(filter) : std::nan("");
 
   // Picture (into a temporary file: renamed only once the output is written too).
   std::string pictureTemporary;
@@ -952,6 +1083,10 @@ int main(int argc, char* argv[])
     caption << method->Name << ": " << filter->GetNumberOfFeaturePoints()
             << " feature points (red) of " << n << ", " << filter->GetScoreArrayName() << " > "
             << std::setprecision(4) << filter->GetThresholdUsed();
+    if (!std::isnan(grown))
+    {
+      caption << ", grown through > " << grown;
+    }
     if (!RenderPicture(result, filter->GetScoreArrayName(), filter->GetThresholdUsed(),
           caption.str(), s.Width, s.Height, pictureTemporary, error))
     {
@@ -991,14 +1126,19 @@ int main(int argc, char* argv[])
   {
     const vtkIdType features = filter->GetNumberOfFeaturePoints();
     std::printf("input       %s: %lld points\n", s.Input.c_str(), static_cast<long long>(n));
-    std::printf("method      %s, mean spacing %.6g\n", method->Name, filter->GetMeanSpacing());
-    std::printf("threshold   %s > %.6g (%s)\n", filter->GetScoreArrayName(),
+    std::printf("method      %s, mean spacing %.6g%s\n", method->Name, filter->GetMeanSpacing(),
+      method->Details ? method->Details(filter).c_str() : "");
+    std::printf("threshold   %s > %.6g (%s)%s\n", filter->GetScoreArrayName(),
       filter->GetThresholdUsed(),
       filter->GetThresholdMode() == vtkFeaturePointDetector::AUTOMATIC
         ? (FormatNumber(filter->GetThresholdSigmas()) + " robust standard deviations above the "
                                                         "median")
             .c_str()
-        : "absolute");
+        : "absolute",
+      std::isnan(grown) ? ""
+                        : (", then grown along the features through " +
+                            std::string(filter->GetScoreArrayName()) + " > " + FormatNumber(grown))
+                            .c_str());
     std::printf("candidates  %lld of %lld points scored\n",
       static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n));
     std::printf("features    %lld (%.2f %%)\n", static_cast<long long>(features),

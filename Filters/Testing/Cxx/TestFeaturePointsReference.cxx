@@ -5,6 +5,7 @@
 //
 //   TestFeaturePointsReference REFERENCE.txt           compare (the CTest)
 //   TestFeaturePointsReference REFERENCE.txt --write   rewrite it after a change of results
+#include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFeaturePointExtraction.h"
@@ -47,6 +48,7 @@ int TestFeaturePointsReference(int argc, char* argv[])
           "# feature points, output point arrays, feature point ids.\n"
        << "cloud model=" << model << " points=" << points << " seed=" << seed << "\n";
   const std::pair<const char*, vtkSmartPointer<vtkFeaturePointDetector>> detectors[] = {
+    { "CreaseVotingFeatures", vtkSmartPointer<vtkCreaseVotingFeatures>::New() },
     { "FeaturePointExtraction", vtkSmartPointer<vtkFeaturePointExtraction>::New() },
     { "SmoothShrinkIndexFeatures", vtkSmartPointer<vtkSmoothShrinkIndexFeatures>::New() },
     { "SurfaceVariationFeatures", vtkSmartPointer<vtkSurfaceVariationFeatures>::New() },

@@ -32,7 +32,8 @@ LoadPlugin(plugin, remote=False, ns=globals())
 
 # The XML: every filter under "Point Cloud", every property documented, point sets only.
 pxm = servermanager.ProxyManager()
-proxies = {"FeaturePointExtraction": "FeaturePoints",
+proxies = {"CreaseVotingFeatures": "CreaseFeaturePoints",
+           "FeaturePointExtraction": "FeaturePoints",
            "SmoothShrinkIndexFeatures": "SSIFeaturePoints",
            "SurfaceVariationFeatures": "PCAFeaturePoints",
            "CurvatureDensityFeatures": "WangYuanFeaturePoints"}

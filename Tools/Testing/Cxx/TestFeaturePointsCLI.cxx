@@ -7,6 +7,7 @@
 //
 // Every bad input must give its exit code (1 bad input or failure, 2 bad usage), a one-line
 // message naming the file and the problem, and leave no output file (nor a temporary one).
+#include "vtkCreaseVotingFeatures.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkIdTypeArray.h"
@@ -199,7 +200,9 @@ int Screenshot(const std::string& baseline)
   const std::string picture = Path("TestFeaturePointsCLIScreenshot.png");
   Check(vtkPointCloudIO::Write(ModelCloud(vtkFeatureModelSource::MODEL_I, 30000), input, error),
     "write the input: " + error);
-  const Run run = Execute({ input, output, "--screenshot", picture, "--size", "640x480" });
+  // The baseline shows the paper's method (huang2023, the default before crease): pinned.
+  const Run run = Execute(
+    { input, output, "--method", "huang2023", "--screenshot", picture, "--size", "640x480" });
   Check(run.Code == 0, "--screenshot run: exit code " + std::to_string(run.Code) + ": " + run.Err);
   Check(Exists(picture), "--screenshot wrote no picture");
   if (!Exists(baseline))
@@ -251,7 +254,10 @@ int main(int argc, char* argv[])
            "--threads", "--quiet", "--version", "--alpha", "--normal-k", "--ssi-k", "--density-k",
            "--center-k", "--ssi-center", "--gaussian-radius", "--voxel-filter", "--voxel-size",
            "--density-contrast", "--voxel-rule", "--threshold", "--threshold-sigmas", "--k",
-           "huang2023", "pca", "wang-yuan", "[0.75", "[15, 3 to 1000]" })
+           "--crease-k", "--band-width", "--min-angle", "--grow-threshold", "crease", "huang2023",
+           "ssi", "pca", "wang-yuan", "[0.75", "[15, 3 to 1000]", "[60, 8 to 1000]",
+           "[automatic; crease: 0.5]", "(default: --method crease)", "--method NAME         "
+           "the method (default crease)" })
     {
       Check(help.Out.find(option) != std::string::npos, std::string("--help lacks ") + option);
     }
@@ -265,32 +271,76 @@ int main(int argc, char* argv[])
   Check(vtkPointCloudIO::Write(cloud, vtp, error), "write model.vtp: " + error);
   Check(vtkPointCloudIO::Write(cloud, ply, error), "write model.ply: " + error);
   Check(vtkPointCloudIO::Write(cloud, csv, error), "write model.csv: " + error);
+  // The default method is crease (vtkCreaseVotingFeatures, absolute threshold 0.5 on CreaseVotes).
   {
-    const Run run = Execute({ vtp, Path("out.vtp") });
-    Check(run.Code == 0, "vtp -> vtp: exit code " + std::to_string(run.Code) + ": " + run.Err);
-    Check(run.Out.find("features") != std::string::npos &&
-        run.Out.find("candidates") != std::string::npos && run.Out.find("time (s)") != std::string::npos,
-      "summary lines: " + run.Out);
-    vtkNew<vtkFeaturePointExtraction> filter;
-    CheckSameMask("vtp -> vtp", filter, vtp, Path("out.vtp"));
+    const Run run = Execute({ vtp, Path("default.vtp") });
+    Check(run.Code == 0, "default method: exit code " + std::to_string(run.Code) + ": " + run.Err);
+    Check(run.Out.find("method      crease, mean spacing") != std::string::npos &&
+        run.Out.find("noise sigma") != std::string::npos &&
+        run.Out.find("threshold   CreaseVotes > 0.5 (absolute)") != std::string::npos,
+      "default method's summary names crease and its threshold: " + run.Out);
+    vtkNew<vtkCreaseVotingFeatures> filter;
+    CheckSameMask("vtp -> vtp, default method (crease)", filter, vtp, Path("default.vtp"));
   }
   {
-    const Run run = Execute({ ply, Path("out.csv"), "--threads", "1", "--quiet" });
+    const Run run = Execute({ vtp, Path("crease.vtp"), "--method", "crease", "--crease-k", "40",
+      "--normal-k", "12", "--band-width", "1.5", "--min-angle", "20", "--grow-threshold", "0.4" });
+    Check(run.Code == 0, "--method crease with options: " + run.Err);
+    vtkNew<vtkCreaseVotingFeatures> filter;
+    filter->SetNumberOfNeighbors(40);
+    filter->SetNormalNeighbors(12);
+    filter->SetBandWidth(1.5);
+    filter->SetMinimumAngle(20);
+    filter->SetGrowThreshold(0.4);
+    CheckSameMask("vtp -> vtp, --method crease --crease-k 40 --normal-k 12 --band-width 1.5 "
+                  "--min-angle 20 --grow-threshold 0.4",
+      filter, vtp, Path("crease.vtp"));
+  }
+  {
+    // --threshold-sigmas switches crease to the automatic rule; --threshold sets its own.
+    const Run run = Execute({ vtp, Path("crease-auto.vtp"), "--threshold-sigmas", "3" });
+    Check(run.Code == 0 && run.Out.find("3 robust standard deviations") != std::string::npos,
+      "crease --threshold-sigmas 3: " + run.Out + run.Err);
+    vtkNew<vtkCreaseVotingFeatures> filter;
+    filter->SetThresholdModeToAutomatic();
+    filter->SetThresholdSigmas(3);
+    CheckSameMask("vtp -> vtp, crease --threshold-sigmas 3", filter, vtp, Path("crease-auto.vtp"));
+    const Run absolute = Execute({ vtp, Path("crease-abs.vtp"), "--threshold", "0.6" });
+    Check(absolute.Code == 0, "crease --threshold 0.6: " + absolute.Err);
+    vtkNew<vtkCreaseVotingFeatures> filter6;
+    filter6->SetThreshold(0.6);
+    CheckSameMask("vtp -> vtp, crease --threshold 0.6", filter6, vtp, Path("crease-abs.vtp"));
+  }
+  // The paper's method, named: it was the default before crease.
+  {
+    const Run run = Execute({ vtp, Path("out.vtp"), "--method", "huang2023" });
+    Check(run.Code == 0, "vtp -> vtp: exit code " + std::to_string(run.Code) + ": " + run.Err);
+    Check(run.Out.find("features") != std::string::npos &&
+        run.Out.find("candidates") != std::string::npos && run.Out.find("time (s)") != std::string::npos &&
+        run.Out.find("method      huang2023") != std::string::npos,
+      "summary lines: " + run.Out);
+    vtkNew<vtkFeaturePointExtraction> filter;
+    CheckSameMask("vtp -> vtp, --method huang2023", filter, vtp, Path("out.vtp"));
+  }
+  {
+    const Run run =
+      Execute({ ply, Path("out.csv"), "--method", "huang2023", "--threads", "1", "--quiet" });
     Check(run.Code == 0 && run.Out.empty() && run.Err.empty(),
       "ply -> csv --quiet: code " + std::to_string(run.Code) + ", output '" + run.Out + run.Err + "'");
     vtkNew<vtkFeaturePointExtraction> filter;
-    CheckSameMask("ply -> csv, 1 thread", filter, ply, Path("out.csv"));
+    CheckSameMask("ply -> csv, --method huang2023, 1 thread", filter, ply, Path("out.csv"));
   }
   {
-    const Run run = Execute({ csv, Path("out.ply"), "--alpha", "0.9", "--voxel-filter", "off",
-      "--threshold-sigmas", "4" });
+    const Run run = Execute({ csv, Path("out.ply"), "--method", "huang2023", "--alpha", "0.9",
+      "--voxel-filter", "off", "--threshold-sigmas", "4" });
     Check(run.Code == 0, "csv -> ply with options: " + run.Err);
     vtkNew<vtkFeaturePointExtraction> filter;
     filter->SetAlpha(0.9);
     filter->UseVoxelFilterOff();
     filter->SetThresholdSigmas(4);
-    CheckSameMask("csv -> ply, --alpha 0.9 --voxel-filter off --threshold-sigmas 4", filter, csv,
-      Path("out.ply"));
+    CheckSameMask("csv -> ply, --method huang2023 --alpha 0.9 --voxel-filter off "
+                  "--threshold-sigmas 4",
+      filter, csv, Path("out.ply"));
   }
   {
     const Run run = Execute({ vtp, Path("pca.vtk"), "--method", "pca", "--k", "20" });
@@ -299,11 +349,11 @@ int main(int argc, char* argv[])
     filter->SetNumberOfNeighbors(20);
     CheckSameMask("vtp -> vtk, --method pca --k 20", filter, vtp, Path("pca.vtk"));
   }
-  // --features-only: the feature points, their ids in the input.
+  // --features-only: the feature points, their ids in the input (default method, as default.vtp).
   {
     const Run run = Execute({ vtp, Path("features.vtp"), "--features-only" });
     Check(run.Code == 0, "--features-only: " + run.Err);
-    vtkSmartPointer<vtkPointSet> all = vtkPointCloudIO::Read(Path("out.vtp"), error);
+    vtkSmartPointer<vtkPointSet> all = vtkPointCloudIO::Read(Path("default.vtp"), error);
     vtkSmartPointer<vtkPointSet> only = vtkPointCloudIO::Read(Path("features.vtp"), error);
     auto* ids = only ? vtkIdTypeArray::SafeDownCast(
                          only->GetPointData()->GetArray("vtkOriginalPointIds"))
@@ -323,21 +373,31 @@ int main(int argc, char* argv[])
       only->GetPoint(j, b);
       consistent = mask->GetValue(i) == 1 && a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
     }
-    Check(consistent, "--features-only: the feature points, each with its id in the input");
+    Check(consistent && selected > 0,
+      "--features-only: the feature points, each with its id in the input");
   }
 
   // Bad usage: exit code 2.
   ExpectFailure("no arguments", {}, 2, "INPUT and OUTPUT files are needed", "");
   ExpectFailure("unknown option", { vtp, Path("o1.vtp"), "--bogus" }, 2,
     "unknown option '--bogus'", Path("o1.vtp"));
-  ExpectFailure("out-of-range parameter", { vtp, Path("o2.vtp"), "--alpha", "1.5" }, 2,
+  ExpectFailure("out-of-range parameter",
+    { vtp, Path("o2.vtp"), "--method", "huang2023", "--alpha", "1.5" }, 2,
     "--alpha 1.5 is out of range", Path("o2.vtp"));
   ExpectFailure("non-numeric parameter", { vtp, Path("o3.vtp"), "--normal-k", "ten" }, 2,
     "--normal-k takes a number", Path("o3.vtp"));
-  ExpectFailure("fractional count", { vtp, Path("o4.vtp"), "--ssi-k", "2.5" }, 2,
+  ExpectFailure("fractional count", { vtp, Path("o4.vtp"), "--method", "huang2023", "--ssi-k", "2.5" }, 2,
     "--ssi-k 2.5 is out of range: a whole number", Path("o4.vtp"));
   ExpectFailure("option of another method", { vtp, Path("o5.vtp"), "--method", "pca", "--alpha", "1" },
     2, "option --alpha does not apply to --method pca", Path("o5.vtp"));
+  ExpectFailure("option of the paper's method, default method", { vtp, Path("o5.vtp"), "--alpha", "1" },
+    2, "option --alpha does not apply to --method crease", Path("o5.vtp"));
+  ExpectFailure("crease option, another method",
+    { vtp, Path("o5.vtp"), "--method", "huang2023", "--band-width", "1" }, 2,
+    "option --band-width does not apply to --method huang2023", Path("o5.vtp"));
+  ExpectFailure("absolute and automatic threshold",
+    { vtp, Path("o5.vtp"), "--threshold", "0.5", "--threshold-sigmas", "3" }, 2,
+    "options --threshold and --threshold-sigmas exclude each other", Path("o5.vtp"));
   ExpectFailure("unknown method", { vtp, Path("o6.vtp"), "--method", "magic" }, 2,
     "unknown method 'magic'", Path("o6.vtp"));
   ExpectFailure("unknown input extension", { Path("model.foo"), Path("o7.vtp") }, 2,
