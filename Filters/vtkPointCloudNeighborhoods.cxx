@@ -35,6 +35,21 @@ struct vtkPointCloudNeighborhoods::SearchGrid
   {
     return i + this->Dims[0] * (j + static_cast<vtkIdType>(this->Dims[1]) * k);
   }
+  // Squared distance from x to the box of cell (i, j, k); border cells are open on their outer side.
+  double BoxDistance2(int i, int j, int k, const double x[3]) const
+  {
+    const int c[3] = { i, j, k };
+    double d2 = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double lo = this->Origin[a] + c[a] * this->Spacing;
+      const double gap = c[a] > 0 && x[a] < lo
+        ? lo - x[a]
+        : (c[a] < this->Dims[a] - 1 && x[a] > lo + this->Spacing ? x[a] - lo - this->Spacing : 0.0);
+      d2 += gap * gap;
+    }
+    return d2;
+  }
   // The cell of x, clamped to the grid: points beyond the robust box sit in its border cells.
   void CellOf(const double x[3], int c[3]) const
   {
@@ -166,6 +181,15 @@ struct GridNeighborsWorker
           const int hi[3] = { std::min(c[0] + ring, g.Dims[0] - 1),
             std::min(c[1] + ring, g.Dims[1] - 1), std::min(c[2] + ring, g.Dims[2] - 1) };
           auto scan = [&](int i, int j, int k) {
+            // Skip a cell whose box lies farther than the k-th best distance so far: none of its
+            // points can enter (the border cells reach to infinity, they hold the clamped points).
+            const double limit = useHeap
+              ? (static_cast<int>(candidates.size()) == this->K ? candidates.front().D2 : VTK_DOUBLE_MAX)
+              : bound;
+            if (limit < VTK_DOUBLE_MAX && g.BoxDistance2(i, j, k, x) > limit)
+            {
+              return;
+            }
             const vtkIdType cell = g.Index(i, j, k);
             for (int32_t s = g.CellStart[cell]; s < g.CellStart[cell + 1]; ++s)
             {
