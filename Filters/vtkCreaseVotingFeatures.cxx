@@ -30,35 +30,48 @@ constexpr int MaximumRounds = 8;
 // Neighbours through which the hysteresis step connects points.
 constexpr int ConnectionNeighbors = 8;
 
-// Least-squares plane of the points with label `side` (or all when side < 0): centroid, unit
-// normal, residual sum of squares. Returns false with fewer than 3 points.
-bool FitPlane(const std::vector<Eigen::Vector3d>& p, const std::vector<unsigned char>& label,
-  int side, Eigen::Vector3d& centroid, Eigen::Vector3d& normal, double& rss)
+// Moments of a set of points: count, sum, sum of outer products (upper triangle). The points are
+// relative to the fitted point, a few spacings long, so the one-pass covariance loses nothing.
+struct Moments
 {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int m = 0;
-  for (size_t j = 0; j < p.size(); ++j)
+  int Count = 0;
+  double S[3] = { 0.0, 0.0, 0.0 };
+  double SS[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // xx xy xz yy yz zz
+
+  void Add(const Eigen::Vector3d& p)
   {
-    if (side < 0 || label[j] == side)
-    {
-      sum += p[j];
-      ++m;
-    }
+    ++this->Count;
+    this->S[0] += p[0];
+    this->S[1] += p[1];
+    this->S[2] += p[2];
+    this->SS[0] += p[0] * p[0];
+    this->SS[1] += p[0] * p[1];
+    this->SS[2] += p[0] * p[2];
+    this->SS[3] += p[1] * p[1];
+    this->SS[4] += p[1] * p[2];
+    this->SS[5] += p[2] * p[2];
   }
-  if (m < 3)
+};
+
+// Least-squares plane of a set of points from its moments: centroid, unit normal, residual sum of
+// squares. Returns false with fewer than 3 points.
+bool FitPlane(const Moments& m, Eigen::Vector3d& centroid, Eigen::Vector3d& normal, double& rss)
+{
+  if (m.Count < 3)
   {
     return false;
   }
-  centroid = sum / m;
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (size_t j = 0; j < p.size(); ++j)
-  {
-    if (side < 0 || label[j] == side)
-    {
-      const Eigen::Vector3d v = p[j] - centroid;
-      cov += v * v.transpose();
-    }
-  }
+  centroid = Eigen::Vector3d(m.S[0], m.S[1], m.S[2]) / m.Count;
+  Eigen::Matrix3d cov;
+  cov(0, 0) = m.SS[0] - m.S[0] * centroid[0];
+  cov(0, 1) = m.SS[1] - m.S[0] * centroid[1];
+  cov(0, 2) = m.SS[2] - m.S[0] * centroid[2];
+  cov(1, 1) = m.SS[3] - m.S[1] * centroid[1];
+  cov(1, 2) = m.SS[4] - m.S[1] * centroid[2];
+  cov(2, 2) = m.SS[5] - m.S[2] * centroid[2];
+  cov(1, 0) = cov(0, 1);
+  cov(2, 0) = cov(0, 2);
+  cov(2, 1) = cov(1, 2);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(cov);
   normal = solver.eigenvectors().col(0);
@@ -91,7 +104,12 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   label.assign(m, 0);
   Eigen::Vector3d c1, n1;
   double rss1 = 0.0;
-  if (m < 8 || !FitPlane(p, label, -1, c1, n1, rss1))
+  Moments all;
+  for (size_t j = 0; j < m; ++j)
+  {
+    all.Add(p[j]);
+  }
+  if (m < 8 || !FitPlane(all, c1, n1, rss1))
   {
     return fit;
   }
@@ -111,32 +129,38 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(spread);
   const Eigen::Vector3d e = solver.eigenvectors().col(2);
+  Moments side[2];
   for (size_t j = 0; j < m; ++j)
   {
     const Eigen::Vector3d v = (nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j]) - mean;
     label[j] = v.dot(e) >= 0.0 ? 0 : 1;
+    side[label[j]].Add(p[j]);
   }
-  // Planes and nearest-plane assignment until the split settles.
+  // Planes and nearest-plane assignment until the split settles; each pass over the points
+  // assigns them and gathers the moments of the next round's planes.
   Eigen::Vector3d ca, na, cb, nb;
   double ra = 0.0, rb = 0.0, rss2 = rss1;
   bool fitted = false;
   next.resize(m);
   for (int round = 0; round < MaximumRounds; ++round)
   {
-    if (!FitPlane(p, label, 0, ca, na, ra) || !FitPlane(p, label, 1, cb, nb, rb))
+    if (!FitPlane(side[0], ca, na, ra) || !FitPlane(side[1], cb, nb, rb))
     {
       break;
     }
     fitted = true;
     double rss = 0.0;
     bool changed = false;
+    Moments nextSide[2];
+    const double oa = ca.dot(na), ob = cb.dot(nb);
     for (size_t j = 0; j < m; ++j)
     {
-      const double da = (p[j] - ca).dot(na);
-      const double db = (p[j] - cb).dot(nb);
+      const double da = p[j].dot(na) - oa;
+      const double db = p[j].dot(nb) - ob;
       next[j] = da * da <= db * db ? 0 : 1;
       rss += std::min(da * da, db * db);
       changed = changed || next[j] != label[j];
+      nextSide[next[j]].Add(p[j]);
     }
     rss2 = rss;
     if (!changed)
@@ -144,6 +168,8 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
       break;
     }
     label.swap(next);
+    side[0] = nextSide[0];
+    side[1] = nextSide[1];
   }
   if (!fitted)
   {
@@ -323,6 +349,15 @@ int vtkCreaseVotingFeatures::RequestData(
   const double minAngle = this->MinimumAngle;
   const double band2 = this->BandWidth * d * this->BandWidth * d;
   float* vote = votes->GetPointer(0);
+  // One byte per point says whether its fit may vote, so that the vote reads only voters' fits.
+  std::vector<unsigned char> voter(n, 0);
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const CreaseFit& f = fits[r];
+      voter[ids[r]] = f.HasLine && f.Gain > gate && !(f.Angle < minAngle) ? 1 : 0;
+    }
+  });
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
     double x[3], y[3];
     for (vtkIdType r = begin; r < end; ++r)
@@ -335,11 +370,11 @@ int vtkCreaseVotingFeatures::RequestData(
       for (int j = -1; j < count; ++j)
       {
         const vtkIdType other = j < 0 ? id : static_cast<vtkIdType>(row[j]);
-        const CreaseFit& f = fits[rowOf[other]];
-        if (!f.HasLine || !(f.Gain > gate) || f.Angle < minAngle)
+        if (!voter[other])
         {
           continue;
         }
+        const CreaseFit& f = fits[rowOf[other]];
         points->GetPoint(other, y);
         double v[3];
         for (int c = 0; c < 3; ++c)
