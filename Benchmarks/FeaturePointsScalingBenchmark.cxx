@@ -3,6 +3,7 @@
 // - for each size (default 100K, 1M, 10M points of Model I, features sampled 3x denser): the
 //   proposed method's time per stage, points per second, peak memory beyond the input, and the
 //   ratio of its time to vtkPCANormalEstimation's and vtkPCACurvatureEstimation's (k = 15);
+// - the same figures for the default detector, vtkCreaseVotingFeatures (the CLI's --method crease);
 // - the voxel step with and without, on denser-feature and uniform clouds;
 // - the output with 1 thread against the output with all threads (bit-identical or not).
 //
@@ -10,6 +11,7 @@
 //
 // Peak memory is the process's high-water mark (VmHWM, reset before each run through
 // /proc/self/clear_refs) minus its resident size before the run, the input already built.
+#include "vtkCreaseVotingFeatures.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkFloatArray.h"
@@ -96,11 +98,10 @@ struct Run
   vtkSmartPointer<vtkPolyData> Output;
 };
 
-Run RunFilter(vtkPolyData* cloud, bool voxel, bool keep = false)
+// Time, peak memory and stages of one run of `filter` on `cloud`.
+Run RunDetector(vtkFeaturePointDetector* filter, vtkPolyData* cloud, bool keep = false)
 {
   Run run;
-  vtkNew<vtkFeaturePointExtraction> filter;
-  filter->SetUseVoxelFilter(voxel);
   filter->SetInputData(cloud);
   ResetPeak();
   const long before = StatusKiB("VmRSS:");
@@ -110,13 +111,34 @@ Run RunFilter(vtkPolyData* cloud, bool voxel, bool keep = false)
   {
     run.Stages.emplace_back(filter->GetStageName(i), filter->GetStageTime(i));
   }
-  run.Candidates = filter->GetNumberOfCandidates();
   run.Features = filter->GetNumberOfFeaturePoints();
   if (keep)
   {
     run.Output = filter->GetOutput();
   }
   return run;
+}
+
+Run RunFilter(vtkPolyData* cloud, bool voxel, bool keep = false)
+{
+  vtkNew<vtkFeaturePointExtraction> filter;
+  filter->SetUseVoxelFilter(voxel);
+  Run run = RunDetector(filter, cloud, keep);
+  run.Candidates = filter->GetNumberOfCandidates();
+  return run;
+}
+
+std::string StageList(const Run& run)
+{
+  std::string stages;
+  for (const auto& s : run.Stages)
+  {
+    char text[64];
+    std::snprintf(
+      text, sizeof(text), "%s%s %.3f", stages.empty() ? "" : ", ", s.first.c_str(), s.second);
+    stages += text;
+  }
+  return stages;
 }
 
 template <typename FilterT>
@@ -198,14 +220,7 @@ int main(int argc, char* argv[])
     const Run run = RunFilter(cloud, true);
     const double normals = TimeVTK<vtkPCANormalEstimation>(cloud, repeat);
     const double curvature = TimeVTK<vtkPCACurvatureEstimation>(cloud, repeat);
-    std::string stages;
-    for (const auto& s : run.Stages)
-    {
-      char text[64];
-      std::snprintf(text, sizeof(text), "%s%s %.3f", stages.empty() ? "" : ", ", s.first.c_str(),
-        s.second);
-      stages += text;
-    }
+    const std::string stages = StageList(run);
     const double perPoint = run.Seconds / n;
     firstPerPoint = firstPerPoint > 0 ? firstPerPoint : perPoint;
     std::printf("%10lld %8.3f %9.2f %9.1f %8.0f %8.2f %9.2f %9lld  %s\n",
@@ -216,6 +231,15 @@ int main(int argc, char* argv[])
                 "point %.2fx the first size's\n",
       "", normals, curvature, perPoint / firstPerPoint);
     ok = ok && std::isfinite(run.Seconds) && run.Features > 0;
+    // The default detector on the same cloud.
+    vtkNew<vtkCreaseVotingFeatures> crease;
+    const Run creaseRun = RunDetector(crease, cloud);
+    std::printf("%10s crease (the default detector): %.3f s, %.2f Mpoint/s, peak %.1f MiB (%.0f "
+                "B/point), %.2fx PCANormal, %lld features; %s\n",
+      "", creaseRun.Seconds, n / creaseRun.Seconds / 1e6, creaseRun.PeakMiB,
+      creaseRun.PeakMiB * 1048576.0 / n, creaseRun.Seconds / normals,
+      static_cast<long long>(creaseRun.Features), StageList(creaseRun).c_str());
+    ok = ok && std::isfinite(creaseRun.Seconds) && creaseRun.Features > 0;
   }
 
   // The voxel step: faster on denser features, no slower on uniform clouds.
