@@ -34,8 +34,28 @@ namespace
 // m(i) never goes below this fraction of the mean spacing (stacks of coincident points).
 constexpr double MinimumMeanDistance = 1e-3;
 
-// One non-candidate in this many is scored to show the AUTOMATIC threshold the background.
-constexpr vtkIdType BackgroundStride = 8;
+// The AUTOMATIC threshold must see the cloud's background, not only the candidates' feature-rich
+// population: a sample of the non-candidates is scored too. The sample is made of whole blocks of
+// side BackgroundBlockFactor * d, one in BackgroundBlockModulus (at least) chosen by a hash of the
+// block's grid coordinates, so that it depends on where the points are, not on their order, and
+// the neighbourhoods of a sampled block's points overlap: the m(j) a block needs come from about
+// twice its own points, where scattered samples would need the m(j) of nearly every point.
+constexpr double BackgroundBlockFactor = 16.0;
+constexpr uint64_t BackgroundBlockModulus = 8;
+// Enough background for the threshold's median and MAD; larger clouds sample fewer blocks.
+constexpr vtkIdType BackgroundTarget = 65536;
+// Below this many sampled points, every non-candidate is scored (small clouds: cheap anyway).
+constexpr vtkIdType BackgroundMinimum = 512;
+
+inline uint64_t MixBits(uint64_t key)
+{
+  key ^= key >> 33;
+  key *= 0xff51afd7ed558ccdULL;
+  key ^= key >> 33;
+  key *= 0xc4ceb9fe1a85ec53ULL;
+  key ^= key >> 33;
+  return key;
+}
 
 // Eq. 7: mean distance from point `id` to the first k entries of its row.
 inline double MeanDistance(vtkPoints* points, vtkIdType id, const int32_t* row, int k, double floor)
@@ -260,19 +280,24 @@ int vtkFeaturePointExtraction::RequestData(
   // feature-rich population alone. The sample is scored but never marked, and its scores are
   // cleared from the output.
   std::vector<vtkIdType> background;
+  int backgroundWeight = 1;
   if (this->UseVoxelFilter)
   {
-    vtkIdType others = 0;
+    if (this->ThresholdMode == AUTOMATIC && !scoreAll)
+    {
+      backgroundWeight = this->SampleBackground(points, valid, isCandidate, d,
+        neighborhoods->GetBounds(), background);
+    }
+    std::vector<unsigned char> sampled(n, 0);
+    for (vtkIdType id : background)
+    {
+      sampled[id] = 1;
+    }
     for (vtkIdType i = 0; i < n; ++i)
     {
-      if (isCandidate[i])
+      if (isCandidate[i] || sampled[i])
       {
         ids.push_back(i);
-      }
-      else if (valid[i] && this->ThresholdMode == AUTOMATIC && (others++ % BackgroundStride) == 0)
-      {
-        ids.push_back(i);
-        background.push_back(i);
       }
     }
     // One k-nearest query per scored point, for every quantity.
@@ -345,7 +370,7 @@ int vtkFeaturePointExtraction::RequestData(
   std::vector<int> weights(ids.size(), 1);
   for (size_t r = 0; r < ids.size(); ++r)
   {
-    weights[r] = isCandidate[ids[r]] ? 1 : static_cast<int>(BackgroundStride);
+    weights[r] = isCandidate[ids[r]] ? 1 : backgroundWeight;
   }
   this->ApplyThreshold(score->GetPointer(0), ids, &weights, isCandidate, mask->GetPointer(0));
   for (vtkIdType id : background)
@@ -357,6 +382,63 @@ int vtkFeaturePointExtraction::RequestData(
   }
   this->UpdateProgress(1.0);
   return finish();
+}
+
+int vtkFeaturePointExtraction::SampleBackground(vtkPoints* points, const unsigned char* valid,
+  const unsigned char* isCandidate, double d, const double bounds[6],
+  std::vector<vtkIdType>& background)
+{
+  background.clear();
+  const vtkIdType n = points->GetNumberOfPoints();
+  vtkIdType others = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    others += valid[i] && !isCandidate[i] ? 1 : 0;
+  }
+  if (others == 0)
+  {
+    return 1;
+  }
+  // One block in `modulus`: BackgroundBlockModulus, or more blocks skipped in large clouds.
+  const uint64_t modulus = std::max<uint64_t>(BackgroundBlockModulus,
+    static_cast<uint64_t>(others / BackgroundTarget));
+  const double side = BackgroundBlockFactor * d;
+  double x[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!valid[i] || isCandidate[i])
+    {
+      continue;
+    }
+    points->GetPoint(i, x);
+    uint64_t key = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      // Block coordinates from the bounding box's corner: the same under scaling and moving.
+      const double b = std::floor((x[c] - bounds[2 * c]) / side);
+      key = key * 0x100000001b3ULL + static_cast<uint64_t>(static_cast<int64_t>(b) & 0x1fffff);
+    }
+    if (MixBits(key) % modulus == 0)
+    {
+      background.push_back(i);
+    }
+  }
+  const vtkIdType sampled = static_cast<vtkIdType>(background.size());
+  if (sampled < std::min(others, BackgroundMinimum))
+  {
+    // Too few blocks (a small cloud): every non-candidate stands for itself.
+    background.clear();
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (valid[i] && !isCandidate[i])
+      {
+        background.push_back(i);
+      }
+    }
+    return 1;
+  }
+  // Each sampled point stands for the non-candidates of the blocks that were not sampled.
+  return std::max(1, static_cast<int>(std::lround(static_cast<double>(others) / sampled)));
 }
 
 void vtkFeaturePointExtraction::PrintSelf(ostream& os, vtkIndent indent)

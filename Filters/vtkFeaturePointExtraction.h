@@ -44,6 +44,15 @@
  *   discarding the values above mu + z s until they settle (at most 50 rounds); the threshold is
  *   mu + z s with z = ThresholdSigmas. s is never taken below 1% of mu, so that a noise-free plane,
  *   whose scores are all equal, yields no features. ABSOLUTE: the value of Threshold.
+ *   With the voxel pre-filter the candidates alone are a feature-rich population, so the AUTOMATIC
+ *   threshold also sees a sample of the other points: whole cubic blocks of side 16 d, one block
+ *   in 8 (fewer when more than 8 x 65536 points are not candidates) chosen by a hash of the
+ *   block's grid coordinates from the bounding box's corner, so that the sample does not depend on
+ *   the points' order, scale or offset. Each sampled point counts for the non-candidates of the
+ *   unsampled blocks; its scores are computed but cleared from the output, and it is never marked.
+ *   Blocks rather than scattered points, because a point's SSI needs m(j) of its SSINeighbors
+ *   neighbours: a block's neighbourhoods overlap, scattered ones would need nearly every point's.
+ *   A cloud with fewer than 512 sampled points scores every non-candidate instead.
  * - m(i) is floored at 0.001 d so that stacks of coincident points give a large but finite D(i).
  *
  * Input: any vtkPointSet (points only are used). Output: a vtkPolyData with the input points in
@@ -172,6 +181,14 @@ protected:
   ~vtkFeaturePointExtraction() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /**
+   * The non-candidates scored for the AUTOMATIC threshold (see the class comment): the points of
+   * the sampled blocks, in point order. Returns how many non-candidates each of them stands for.
+   */
+  static int SampleBackground(vtkPoints* points, const unsigned char* valid,
+    const unsigned char* isCandidate, double spacing, const double bounds[6],
+    std::vector<vtkIdType>& background);
 
   double Alpha = 0.75;
   int NormalNeighbors = 15;

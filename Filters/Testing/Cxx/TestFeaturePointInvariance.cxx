@@ -1,6 +1,14 @@
 // F is dimensionless: the same cloud scaled by 1000, or moved by 10^6 along each axis, gives the
-// same FeatureMask (double-precision coordinates).
+// same FeatureMask (double-precision coordinates); so does a cloud with denser features whose
+// points are also shuffled.
 #include "FeaturePointsTestRun.h"
+
+#include "vtkPointData.h"
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+#include <vector>
 
 int TestFeaturePointInvariance(int, char*[])
 {
@@ -59,5 +67,44 @@ int TestFeaturePointInvariance(int, char*[])
       "%s: spacing ratio %g", t.Name, ratio);
     FP_CHECK(AllFinite(result->GetOutput()), "%s: non-finite output", t.Name);
   }
+
+  // Features sampled 3x denser: the voxel pre-filter keeps a minority of candidates and the
+  // AUTOMATIC threshold scores a sample of the other points, which must depend on where the
+  // points are, not on their order. The cloud is shuffled, scaled and moved at once.
+  Cloud denser = BentPlanes(40000, 43, 60.0, 0.5, 3.0);
+  auto dense = run(denser.Data);
+  const vtkIdType n = denser.Data->GetNumberOfPoints();
+  const long candidates =
+    CountSet(vtkUnsignedCharArray::SafeDownCast(dense->GetOutput()->GetPointData()->GetArray("Candidate")));
+  FP_CHECK(candidates > 0 && candidates < n / 2, "denser cloud: %ld candidates of %lld", candidates,
+    static_cast<long long>(n));
+  std::vector<vtkIdType> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::mt19937 rng(5);
+  std::shuffle(order.begin(), order.end(), rng);
+  vtkNew<vtkPoints> shuffled;
+  shuffled->SetDataTypeToDouble();
+  shuffled->SetNumberOfPoints(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    denser.Data->GetPoint(order[i], p);
+    shuffled->SetPoint(i, 1000.0 * p[0] + 1e6, 1000.0 * p[1] - 1e6, 1000.0 * p[2] + 1e6);
+  }
+  vtkNew<vtkPolyData> shuffledData;
+  shuffledData->SetPoints(shuffled);
+  auto other = run(shuffledData);
+  long differ = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    differ += Mask(other->GetOutput())->GetValue(i) != Mask(dense->GetOutput())->GetValue(order[i]);
+  }
+  std::printf("denser, shuffled, scaled and moved: %ld feature points, %ld candidates, %ld mask "
+              "differences, threshold %.9g / %.9g\n",
+    CountSet(Mask(other->GetOutput())), candidates, differ, other->GetThresholdUsed(),
+    dense->GetThresholdUsed());
+  FP_CHECK(CountSet(Mask(dense->GetOutput())) > 50, "denser cloud: only %ld feature points",
+    CountSet(Mask(dense->GetOutput())));
+  FP_CHECK(differ == 0, "denser cloud shuffled: %ld mask differences", differ);
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
