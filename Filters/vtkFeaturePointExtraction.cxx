@@ -229,7 +229,19 @@ int vtkFeaturePointExtraction::RequestData(
   std::vector<vtkIdType> ids;
   std::vector<int32_t> table;
   double d = 0.0;
-  if (this->UseVoxelFilter)
+  // A sample of the cloud that shows no density contrast: the full test would most likely find
+  // none either, and its 1-nearest pass is skipped (see the header).
+  vtkNew<vtkVoxelDensityContrastFilter> voxels;
+  voxels->SetVoxelSizeFactor(this->VoxelSizeFactor);
+  voxels->SetDensityContrast(this->DensityContrast);
+  voxels->SetContrastRule(this->VoxelContrastRule);
+  bool screen = this->UseVoxelFilter;
+  if (screen)
+  {
+    this->BeginStage("voxel screen");
+    screen = voxels->SampleShowsContrast(neighborhoods);
+  }
+  if (screen)
   {
     this->BeginStage("spacing");
     d = neighborhoods->ComputeMeanSpacing();
@@ -257,14 +269,10 @@ int vtkFeaturePointExtraction::RequestData(
   // Section 3.2: candidates of the voxel pre-filter, or every valid point.
   unsigned char* isCandidate = candidate->GetPointer(0);
   const unsigned char* valid = neighborhoods->GetValidMask();
-  bool scoreAll = !this->UseVoxelFilter;
-  if (this->UseVoxelFilter)
+  bool scoreAll = !screen;
+  if (screen)
   {
     this->BeginStage("voxel filter");
-    vtkNew<vtkVoxelDensityContrastFilter> voxels;
-    voxels->SetVoxelSizeFactor(this->VoxelSizeFactor);
-    voxels->SetDensityContrast(this->DensityContrast);
-    voxels->SetContrastRule(this->VoxelContrastRule);
     voxels->MarkCandidates(
       points, valid, d, neighborhoods->GetNearestDistances().data(), isCandidate);
     // No density contrast anywhere: the cloud is uniformly sampled and the step would drop every
@@ -281,7 +289,7 @@ int vtkFeaturePointExtraction::RequestData(
   // cleared from the output.
   std::vector<vtkIdType> background;
   int backgroundWeight = 1;
-  if (this->UseVoxelFilter)
+  if (screen)
   {
     if (this->ThresholdMode == AUTOMATIC && !scoreAll)
     {

@@ -23,7 +23,11 @@
  * (vtkVoxelDensityContrastFilter, Section 3.2) are scored when UseVoxelFilter is on; the other
  * points get 0 in every score array and are never feature points. When the pre-filter finds no
  * density contrast at all (a uniformly sampled cloud), every point is scored, so features are not
- * lost.
+ * lost. With the project's BLOCK_SPACING rule, a cloud of 65536 points or more is first screened
+ * on a spatial sample of about one point in 8 (vtkVoxelDensityContrastFilter::
+ * SampleShowsContrast); when the sample shows no contrast the full test and its 1-nearest pass
+ * over every point are skipped and every point is scored, so that uniform clouds pay about 2 %
+ * for the pre-filter instead of about 15 %. The paper's VOXEL_COUNTS rule is always run in full.
  *
  * Choices the paper leaves open, made here (each changeable where another reading is reasonable):
  * - Neighbourhoods exclude the point itself ("the k nearest other points"), except the centre of

@@ -14,7 +14,9 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -237,28 +239,49 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
   this->VoxelSize = a;
   auto isValid = [valid](vtkIdType i) { return !valid || valid[i]; };
 
-  // Eq. 10-11: bounding box of the valid points.
+  // Eq. 10-11: bounding box of the valid points (in blocks of points, in parallel; min and max do
+  // not depend on the order).
+  constexpr vtkIdType Block = 65536;
+  const vtkIdType nBlocks = (n + Block - 1) / Block;
+  std::vector<std::array<double, 6>> blockBox(nBlocks);
+  std::vector<vtkIdType> blockValid(nBlocks + 1, 0);
+  vtkSMPTools::For(0, nBlocks, [&](vtkIdType first, vtkIdType last) {
+    double y[3];
+    for (vtkIdType blk = first; blk < last; ++blk)
+    {
+      std::array<double, 6> box = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+        -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+      vtkIdType count = 0;
+      for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
+      {
+        if (isValid(i))
+        {
+          points->GetPoint(i, y);
+          ++count;
+          for (int c = 0; c < 3; ++c)
+          {
+            box[c] = std::min(box[c], y[c]);
+            box[3 + c] = std::max(box[3 + c], y[c]);
+          }
+        }
+      }
+      blockBox[blk] = box;
+      blockValid[blk + 1] = count;
+    }
+  });
   double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
   double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  double x[3];
-  vtkIdType nValid = 0;
-  for (vtkIdType i = 0; i < n; ++i)
+  for (vtkIdType blk = 0; blk < nBlocks; ++blk)
   {
-    if (isValid(i))
+    for (int c = 0; c < 3; ++c)
     {
-      points->GetPoint(i, x);
-      ++nValid;
-      for (int c = 0; c < 3; ++c)
-      {
-        lo[c] = std::min(lo[c], x[c]);
-        hi[c] = std::max(hi[c], x[c]);
-      }
+      lo[c] = std::min(lo[c], blockBox[blk][c]);
+      hi[c] = std::max(hi[c], blockBox[blk][3 + c]);
     }
+    blockValid[blk + 1] += blockValid[blk]; // first entry of each block in `keyed` below
   }
-  if (nValid == 0)
-  {
-    return 0;
-  }
+  const vtkIdType nValid = blockValid[nBlocks];
+  double x[3];
   bool fits = true;
   for (int c = 0; c < 3; ++c)
   {
@@ -287,28 +310,35 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
   }
 
   // Voxel key of each valid point, sorted (key, point id).
-  std::vector<std::pair<uint64_t, int32_t>> keyed;
-  keyed.reserve(nValid);
-  vtkIdType clamped = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    if (!isValid(i))
+  std::vector<std::pair<uint64_t, int32_t>> keyed(nValid);
+  std::vector<vtkIdType> blockClamped(nBlocks, 0);
+  vtkSMPTools::For(0, nBlocks, [&](vtkIdType first, vtkIdType last) {
+    double y[3];
+    for (vtkIdType blk = first; blk < last; ++blk)
     {
-      continue;
+      vtkIdType e = blockValid[blk];
+      for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
+      {
+        if (!isValid(i))
+        {
+          continue;
+        }
+        points->GetPoint(i, y);
+        int64_t ijk[3];
+        bool wasClamped = false;
+        for (int c = 0; c < 3; ++c)
+        {
+          const double f = std::floor((y[c] - origin[c]) / a);
+          const double g = std::min(std::max(f, 0.0), static_cast<double>(KeyRange - 1));
+          wasClamped = wasClamped || g != f;
+          ijk[c] = static_cast<int64_t>(g);
+        }
+        blockClamped[blk] += wasClamped ? 1 : 0;
+        keyed[e++] = { PackKey(ijk[0], ijk[1], ijk[2]), static_cast<int32_t>(i) };
+      }
     }
-    points->GetPoint(i, x);
-    int64_t ijk[3];
-    bool wasClamped = false;
-    for (int c = 0; c < 3; ++c)
-    {
-      const double f = std::floor((x[c] - origin[c]) / a);
-      const double g = std::min(std::max(f, 0.0), static_cast<double>(KeyRange - 1));
-      wasClamped = wasClamped || g != f;
-      ijk[c] = static_cast<int64_t>(g);
-    }
-    clamped += wasClamped ? 1 : 0;
-    keyed.emplace_back(PackKey(ijk[0], ijk[1], ijk[2]), static_cast<int32_t>(i));
-  }
+  });
+  const vtkIdType clamped = std::accumulate(blockClamped.begin(), blockClamped.end(), vtkIdType(0));
   this->NumberOfClampedPoints = clamped;
   vtkSMPTools::Sort(keyed.begin(), keyed.end());
 
@@ -512,6 +542,102 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
                        "border: outliers stretch the bounding box.");
   }
   return nCandidates;
+}
+
+bool vtkVoxelDensityContrastFilter::SampleShowsContrast(vtkPointCloudNeighborhoods* neighborhoods)
+{
+  if (this->ContrastRule != BLOCK_SPACING || !neighborhoods)
+  {
+    return true;
+  }
+  vtkPoints* points = neighborhoods->GetPoints();
+  const unsigned char* valid = neighborhoods->GetValidMask();
+  const vtkIdType n = neighborhoods->GetNumberOfPoints();
+  const vtkIdType m = neighborhoods->GetNumberOfValidPoints();
+  const double* b = neighborhoods->GetBounds();
+  const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+    (b[5] - b[4]) * (b[5] - b[4]));
+  constexpr vtkIdType MinimumSample = 8192;
+  constexpr uint64_t SampleModulus = 8;
+  if (!points || m < SampleModulus * MinimumSample || !(diagonal > 0.0))
+  {
+    return true;
+  }
+  const double side = 20.0 * diagonal / std::sqrt(static_cast<double>(m));
+  std::vector<unsigned char> sampled(n, 0);
+  vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
+    double x[3];
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      if (!valid[i])
+      {
+        continue;
+      }
+      points->GetPoint(i, x);
+      uint64_t key = 0;
+      for (int c = 0; c < 3; ++c)
+      {
+        const double r = std::floor((x[c] - b[2 * c]) / side);
+        key = key * 0x100000001b3ULL + static_cast<uint64_t>(static_cast<int64_t>(r) & 0x1fffff);
+      }
+      key ^= key >> 33;
+      key *= 0xff51afd7ed558ccdULL;
+      key ^= key >> 33;
+      key *= 0xc4ceb9fe1a85ec53ULL;
+      key ^= key >> 33;
+      sampled[i] = key % SampleModulus == 0 ? 1 : 0;
+    }
+  });
+  std::vector<vtkIdType> ids;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (sampled[i])
+    {
+      ids.push_back(i);
+    }
+  }
+  if (static_cast<vtkIdType>(ids.size()) < MinimumSample)
+  {
+    return true;
+  }
+  std::vector<int32_t> table;
+  std::vector<double> found;
+  neighborhoods->FindNearestNeighbors(1, ids, table, &found);
+  // The sample's mean spacing, as vtkPointCloudNeighborhoods measures the cloud's: coincident
+  // points and isolated outliers (over 10 times the median) left out.
+  std::vector<double> positive;
+  for (double v : found)
+  {
+    if (v > 0.0)
+    {
+      positive.push_back(v);
+    }
+  }
+  if (positive.empty())
+  {
+    return true;
+  }
+  auto mid = positive.begin() + positive.size() / 2;
+  std::nth_element(positive.begin(), mid, positive.end());
+  const double limit = 10.0 * *mid;
+  double sum = 0.0;
+  vtkIdType count = 0;
+  for (double v : found)
+  {
+    if (v > 0.0 && v <= limit)
+    {
+      sum += v;
+      ++count;
+    }
+  }
+  std::vector<double> nearest(n, 0.0);
+  for (size_t r = 0; r < ids.size(); ++r)
+  {
+    nearest[ids[r]] = found[r];
+  }
+  std::vector<unsigned char> candidate(n, 0);
+  this->MarkCandidates(points, sampled.data(), sum / count, nearest.data(), candidate.data());
+  return this->NumberOfContrastVoxels > 0;
 }
 
 int vtkVoxelDensityContrastFilter::FillInputPortInformation(int, vtkInformation* info)

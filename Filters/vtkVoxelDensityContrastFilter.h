@@ -61,6 +61,7 @@
 #include <cstdint> // For int32_t
 
 class vtkPoints;
+class vtkPointCloudNeighborhoods;
 
 class FEATUREPOINTSFILTERS_EXPORT vtkVoxelDensityContrastFilter : public vtkPolyDataAlgorithm
 {
@@ -143,6 +144,22 @@ public:
    */
   vtkIdType MarkCandidates(vtkPoints* points, const unsigned char* valid, double spacing,
     const double* nearest, unsigned char* candidate, int32_t* voxelCount = nullptr);
+
+  /**
+   * A quick screen for BLOCK_SPACING before MarkCandidates: the same test on a spatial sample of
+   * the cloud, about one point in SampleModulus. The sample is made of whole cubic regions of side
+   * 20 L / sqrt(n) (L the diagonal of the bounding box, n the number of valid points; that is 25
+   * to 50 spacings on a surface), one in 8 chosen by a hash of the region's grid coordinates from
+   * the box's corner, so that it does not depend on the points' order, scale or offset. Only the
+   * sampled points are searched for their nearest neighbour, and the voxel side comes from their
+   * mean spacing. Returns false when the sample shows no density contrast: the caller may then
+   * skip the full test, whose 1-nearest pass over every point costs as much as the rest of a
+   * cloud's scoring saves on uniform clouds. Returns true when the sample shows contrast, when
+   * it has fewer than 8192 points (a small cloud: test it whole) or when ContrastRule is
+   * VOXEL_COUNTS (the paper's rule is always run in full). A denser region that no sampled region
+   * reaches is missed: the caller then scores every point, which is slower, never worse.
+   */
+  bool SampleShowsContrast(vtkPointCloudNeighborhoods* neighborhoods);
 
   ///@{
   /**

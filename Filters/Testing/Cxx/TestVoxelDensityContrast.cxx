@@ -1,7 +1,9 @@
 // The voxel pre-filter: a crease sampled three times as densely makes it keep the dense band and
 // drop most of the rest; a uniformly sampled cloud shows no contrast, so the feature filter scores
-// every point and finds the same features as without the pre-filter.
+// every point and finds the same features as without the pre-filter. The quick screen on a sample
+// of a large cloud agrees with the full test on both.
 #include "FeaturePointsTestRun.h"
+#include "vtkPointCloudNeighborhoods.h"
 #include "vtkVoxelDensityContrastFilter.h"
 
 int TestVoxelDensityContrast(int, char*[])
@@ -74,5 +76,37 @@ int TestVoxelDensityContrast(int, char*[])
   FP_CHECK(with->GetMeanSpacing() == without->GetMeanSpacing(), "spacing %.17g vs %.17g",
     with->GetMeanSpacing(), without->GetMeanSpacing());
   FP_CHECK(CountSet(Mask(with->GetOutput())) > 100, "no feature found on the uniform crease");
+
+  // The quick screen on a spatial sample (clouds of at least 65536 points): it sees the dense
+  // band of a large cloud, and no contrast on a uniform one, as the full test does. Small clouds
+  // are never screened out.
+  for (const double factor : { 3.0, 1.0 })
+  {
+    Cloud large = BentPlanes(120000, factor > 1.0 ? 33 : 34, 90.0, 0.5, factor, 0.1);
+    vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+    FP_CHECK(neighborhoods->Build(large.Data->GetPoints()), "cannot search the large cloud");
+    vtkNew<vtkVoxelDensityContrastFilter> screen;
+    const bool sampleContrast = screen->SampleShowsContrast(neighborhoods);
+    const vtkIdType sampleVoxels = screen->GetNumberOfOccupiedVoxels();
+    vtkNew<vtkVoxelDensityContrastFilter> full;
+    full->SetInputData(large.Data);
+    full->Update();
+    std::printf("large cloud, density factor %g: screen %s (%lld sampled voxels of %lld), full "
+                "test %lld contrast voxels\n",
+      factor, sampleContrast ? "contrast" : "none", static_cast<long long>(sampleVoxels),
+      static_cast<long long>(full->GetNumberOfOccupiedVoxels()),
+      static_cast<long long>(full->GetNumberOfContrastVoxels()));
+    FP_CHECK(sampleContrast == (factor > 1.0), "density factor %g: the screen says %s", factor,
+      sampleContrast ? "contrast" : "none");
+    FP_CHECK(sampleContrast == (full->GetNumberOfContrastVoxels() > 0),
+      "density factor %g: screen and full test disagree", factor);
+    FP_CHECK(sampleVoxels > 0 && sampleVoxels < full->GetNumberOfOccupiedVoxels() / 4,
+      "the screen voxelized %lld of %lld voxels", static_cast<long long>(sampleVoxels),
+      static_cast<long long>(full->GetNumberOfOccupiedVoxels()));
+  }
+  vtkNew<vtkPointCloudNeighborhoods> small;
+  small->Build(uniform.Data->GetPoints());
+  vtkNew<vtkVoxelDensityContrastFilter> smallScreen;
+  FP_CHECK(smallScreen->SampleShowsContrast(small), "a 30000-point cloud was screened out");
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
