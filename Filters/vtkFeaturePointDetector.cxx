@@ -38,6 +38,101 @@ double Median(std::vector<double>& v)
 vtkFeaturePointDetector::vtkFeaturePointDetector() = default;
 vtkFeaturePointDetector::~vtkFeaturePointDetector() = default;
 
+double vtkFeaturePointDetector::AutomaticThreshold(
+  const std::vector<double>& scores, const std::vector<int>& weights, double sigmas)
+{
+  const size_t n = std::min(scores.size(), weights.size());
+  std::vector<std::pair<double, int64_t>> sorted;
+  sorted.reserve(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (weights[i] > 0)
+    {
+      sorted.emplace_back(scores[i], weights[i]);
+    }
+  }
+  if (sorted.empty())
+  {
+    return 0.0;
+  }
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<double> value(sorted.size());
+  std::vector<int64_t> cumulative(sorted.size() + 1, 0); // weight of the first i entries
+  for (size_t i = 0; i < sorted.size(); ++i)
+  {
+    value[i] = sorted[i].first;
+    cumulative[i + 1] = cumulative[i] + sorted[i].second;
+  }
+  // The value of rank r (0-based) among the first `kept` entries, repeated by their weights.
+  auto atRank = [&](int64_t r) {
+    const size_t i = std::upper_bound(cumulative.begin() + 1, cumulative.end(), r) -
+      (cumulative.begin() + 1);
+    return value[i];
+  };
+  size_t kept = value.size();
+  double threshold = VTK_DOUBLE_MAX;
+  for (int round = 0; round < 50; ++round)
+  {
+    // The median as Median() takes it: the middle value, or the mean of the two middle values.
+    const int64_t total = cumulative[kept];
+    const int64_t mid = total / 2;
+    double mu = atRank(mid);
+    if (total % 2 == 0)
+    {
+      mu = 0.5 * (mu + atRank(mid - 1));
+    }
+    // Median of |value - mu|: walk outwards from mu, the smaller deviation first, until the
+    // weights passed reach the middle rank(s).
+    size_t right = std::lower_bound(value.begin(), value.begin() + kept, mu) - value.begin();
+    size_t left = right; // entries [0, left) lie below mu, [right, kept) at or above it
+    int64_t passed = 0;
+    double below = 0.0, at = 0.0; // deviations of ranks mid - 1 and mid
+    bool haveBelow = total % 2 != 0 || mid == 0;
+    for (;;)
+    {
+      double deviation;
+      int64_t weight;
+      if (left > 0 && (right >= kept || mu - value[left - 1] <= value[right] - mu))
+      {
+        --left;
+        deviation = std::abs(value[left] - mu);
+        weight = cumulative[left + 1] - cumulative[left];
+      }
+      else
+      {
+        deviation = std::abs(value[right] - mu);
+        weight = cumulative[right + 1] - cumulative[right];
+        ++right;
+      }
+      if (!haveBelow && passed + weight > mid - 1)
+      {
+        below = deviation;
+        haveBelow = true;
+      }
+      passed += weight;
+      if (passed > mid)
+      {
+        at = deviation;
+        break;
+      }
+    }
+    const double mad = total % 2 == 0 ? 0.5 * (at + below) : at;
+    const double s = std::max(1.4826 * mad, 0.01 * std::abs(mu));
+    const double next = mu + sigmas * s;
+    if (next == threshold)
+    {
+      break;
+    }
+    threshold = next;
+    kept = std::upper_bound(value.begin(), value.end(), threshold) - value.begin();
+    if (kept == 0)
+    {
+      break;
+    }
+  }
+  return threshold;
+}
+
 int vtkFeaturePointDetector::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
@@ -180,22 +275,13 @@ void vtkFeaturePointDetector::ApplyThreshold(const float* score,
   this->BeginStage("threshold");
   if (this->ThresholdMode == AUTOMATIC)
   {
-    std::vector<double> scores;
-    size_t total = ids.size();
-    if (weights)
-    {
-      total = 0;
-      for (int w : *weights)
-      {
-        total += static_cast<size_t>(w);
-      }
-    }
-    scores.reserve(total);
+    std::vector<double> scores(ids.size());
     for (size_t r = 0; r < ids.size(); ++r)
     {
-      scores.insert(scores.end(), weights ? (*weights)[r] : 1, score[ids[r]]);
+      scores[r] = score[ids[r]];
     }
-    this->ThresholdUsed = AutomaticThreshold(scores, this->ThresholdSigmas);
+    this->ThresholdUsed = weights ? AutomaticThreshold(scores, *weights, this->ThresholdSigmas)
+                                  : AutomaticThreshold(scores, this->ThresholdSigmas);
   }
   else
   {

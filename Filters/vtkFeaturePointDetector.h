@@ -125,6 +125,14 @@ public:
    */
   static double AutomaticThreshold(std::vector<double>& scores, double sigmas);
 
+  /**
+   * The same rule on weighted scores: score i counts weights[i] times (weights >= 1). Gives exactly
+   * the threshold of AutomaticThreshold on the scores repeated by their weights, without repeating
+   * them: one sort, then each round walks the kept scores once.
+   */
+  static double AutomaticThreshold(
+    const std::vector<double>& scores, const std::vector<int>& weights, double sigmas);
+
 protected:
   vtkFeaturePointDetector();
   ~vtkFeaturePointDetector() override;
