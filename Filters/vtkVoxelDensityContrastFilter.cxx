@@ -177,7 +177,68 @@ struct SparseGrid
     }
   }
 
-  // Calls f(neighbourIndex) for each occupied voxel of the 26-neighbourhood of voxel v.
+  // Visits the 26-neighbourhoods of voxels taken in increasing order (a loop over a range of
+  // voxels): the first key each of the 9 neighbouring rows needs only grows, so 9 cursors move
+  // forward through the sorted keys, reading them in sequence, instead of searching each row.
+  class Sweep
+  {
+  public:
+    explicit Sweep(const SparseGrid& grid)
+      : Grid(grid)
+    {
+      std::fill(this->Cursor, this->Cursor + 9, -1);
+    }
+
+    // Calls f(neighbourIndex) for each occupied voxel of the 26-neighbourhood of voxel v; v must
+    // be larger than at the previous call.
+    template <typename F>
+    void operator()(vtkIdType v, F&& f)
+    {
+      const uint64_t* keys = this->Grid.Keys.data();
+      const vtkIdType n = static_cast<vtkIdType>(this->Grid.Keys.size());
+      int64_t ijk[3];
+      UnpackKey(keys[v], ijk);
+      const int64_t iLo = std::max<int64_t>(ijk[0] - 1, 0);
+      const int64_t iHi = std::min<int64_t>(ijk[0] + 1, KeyRange - 1);
+      int o = 0;
+      for (int dk = -1; dk <= 1; ++dk)
+      {
+        for (int dj = -1; dj <= 1; ++dj, ++o)
+        {
+          const int64_t j = ijk[1] + dj, k = ijk[2] + dk;
+          if (j < 0 || k < 0 || j >= KeyRange || k >= KeyRange)
+          {
+            continue;
+          }
+          const uint64_t first = PackKey(iLo, j, k), last = PackKey(iHi, j, k);
+          vtkIdType& c = this->Cursor[o];
+          if (c < 0 || (c + 8 < n && keys[c + 8] < first))
+          {
+            // First use, or a long way to go: search the rest of the keys.
+            c = std::lower_bound(keys + std::max<vtkIdType>(c, 0), keys + n, first) - keys;
+          }
+          while (c < n && keys[c] < first)
+          {
+            ++c;
+          }
+          for (vtkIdType w = c; w < n && keys[w] <= last; ++w)
+          {
+            if (w != v)
+            {
+              f(w);
+            }
+          }
+        }
+      }
+    }
+
+  private:
+    const SparseGrid& Grid;
+    vtkIdType Cursor[9];
+  };
+
+  // Calls f(neighbourIndex) for each occupied voxel of the 26-neighbourhood of voxel v, in any
+  // order of v (the rows are looked up).
   template <typename F>
   void ForEachNeighbor(vtkIdType v, F&& f) const
   {
@@ -395,11 +456,12 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
     {
       std::vector<double> nextSum(nVoxels), nextCount(nVoxels);
       vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+        SparseGrid::Sweep neighbors(grid);
         for (vtkIdType v = begin; v < end; ++v)
         {
           double sum = spacingSum[v];
           double c = count[v];
-          grid.ForEachNeighbor(v, [&](vtkIdType w) {
+          neighbors(v, [&](vtkIdType w) {
             sum += spacingSum[w];
             c += count[w];
           });
@@ -456,6 +518,7 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
   this->ReferenceLevel = reference;
   std::vector<unsigned char> contrast(nVoxels, 0);
   vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+    SparseGrid::Sweep neighbors(grid);
     for (vtkIdType v = begin; v < end; ++v)
     {
       bool found = false;
@@ -465,7 +528,7 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
       }
       else
       {
-        grid.ForEachNeighbor(v, [&](vtkIdType w) {
+        neighbors(v, [&](vtkIdType w) {
           found = found || (level[v] - level[w]) / level[w] > eps;
         });
       }
@@ -507,12 +570,13 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
   }
   std::vector<unsigned char> keep(nVoxels, 0);
   vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+    SparseGrid::Sweep neighbors(grid);
     for (vtkIdType v = begin; v < end; ++v)
     {
       bool found = contrast[v] != 0;
       if (!found)
       {
-        grid.ForEachNeighbor(v, [&](vtkIdType w) { found = found || contrast[w] != 0; });
+        neighbors(v, [&](vtkIdType w) { found = found || contrast[w] != 0; });
       }
       keep[v] = found ? 1 : 0;
     }
