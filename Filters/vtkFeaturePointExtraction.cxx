@@ -423,8 +423,8 @@ int vtkFeaturePointExtraction::SampleBackground(vtkPoints* points, const unsigne
     for (int c = 0; c < 3; ++c)
     {
       // Block coordinates from the bounding box's corner: the same under scaling and moving.
-      const double b = std::floor((x[c] - bounds[2 * c]) / side);
-      key = key * 0x100000001b3ULL + static_cast<uint64_t>(static_cast<int64_t>(b) & 0x1fffff);
+      const double b = std::min(std::floor((x[c] - bounds[2 * c]) / side), double(1 << 21));
+      key = key * 0x100000001b3ULL + static_cast<uint64_t>(static_cast<int64_t>(b));
     }
     if (MixBits(key) % modulus == 0)
     {

@@ -641,8 +641,10 @@ bool vtkVoxelDensityContrastFilter::SampleShowsContrast(vtkPointCloudNeighborhoo
       uint64_t key = 0;
       for (int c = 0; c < 3; ++c)
       {
-        const double r = std::floor((x[c] - b[2 * c]) / side);
-        key = key * 0x100000001b3ULL + static_cast<uint64_t>(static_cast<int64_t>(r) & 0x1fffff);
+        // Clamped before the conversion: a far outlier stretches the box (then all points share
+        // a few regions and the sample is all or nothing, which is slower, not wrong).
+        const double r = std::min(std::floor((x[c] - b[2 * c]) / side), double(KeyRange - 1));
+        key = key * 0x100000001b3ULL + static_cast<uint64_t>(static_cast<int64_t>(r));
       }
       key ^= key >> 33;
       key *= 0xff51afd7ed558ccdULL;

@@ -141,5 +141,33 @@ int TestFeaturePointBadInput(int, char*[])
     FP_CHECK(o.Seconds < 30.0, "huge outlier: %.1f s", o.Seconds);
     FP_CHECK(CountSet(Mask(o.Filter->GetOutput())) > 20, "features lost next to an outlier");
   }
+  // Clouds of 65536 points and more go through the voxel screen's spatial sample first: NaN
+  // points, stacks of duplicates and a far outlier together must not upset it.
+  for (const double factor : { 1.0, 3.0 })
+  {
+    Cloud c = BentPlanes(80000, factor > 1.0 ? 66 : 65, 90.0, 0.5, factor);
+    auto p = Copy(c.Data);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (vtkIdType i = 0; i < 80000; i += 800)
+    {
+      p->SetPoint(i, nan, 0.0, nan);
+    }
+    double x[3];
+    for (vtkIdType i = 1; i < 80000; i += 40)
+    {
+      p->GetPoint(i, x);
+      for (int copy = 0; copy < 3; ++copy)
+      {
+        p->InsertNextPoint(x);
+      }
+    }
+    p->InsertNextPoint(1e30, -1e30, 1e30);
+    Outcome o = Run(p);
+    const char* name = factor > 1.0 ? "large, denser, mixed" : "large, uniform, mixed";
+    expect(name, o, "NaN", p->GetNumberOfPoints());
+    FP_CHECK(o.Seconds < 60.0, "%s: %.1f s", name, o.Seconds);
+    FP_CHECK(CountSet(Mask(o.Filter->GetOutput())) > 100, "%s: features lost", name);
+    FP_CHECK(Mask(o.Filter->GetOutput())->GetValue(800) == 0, "%s: NaN point marked", name);
+  }
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
