@@ -157,6 +157,9 @@ struct GridNeighborsWorker
   {
     std::vector<Candidate>& candidates = this->Candidates.Local();
     const auto& g = *this->Grid;
+    // Large k: the k-th squared distance of the previous query, a guess for this one (queries come
+    // in grid order, so neighbouring queries follow each other). The result never depends on it.
+    double hint = -1.0;
     for (vtkIdType o = begin; o < end; ++o)
     {
       // Queries in grid order read their coordinates in sequence, from the grid's own copy.
@@ -170,8 +173,11 @@ struct GridNeighborsWorker
       {
         candidates.clear();
         const bool useHeap = this->K <= 8;
-        // Large k: once k candidates are known, nothing farther than the k-th can enter.
-        double bound = VTK_DOUBLE_MAX;
+        // Large k: once k candidates are known, nothing farther than the k-th can enter. Before
+        // that, a guess from the previous query (1.2 times its k-th distance) keeps the far points
+        // and cells out; when fewer than k points lie within it, the search starts again without.
+        bool guessed = !useHeap && hint > 0.0;
+        double bound = guessed ? 1.44 * hint : VTK_DOUBLE_MAX;
         int c[3];
         g.CellOf(x, c);
         for (int ring = 0;; ++ring)
@@ -285,12 +291,25 @@ struct GridNeighborsWorker
               break;
             }
           }
+          else if (guessed && (everything || (gap > 0.0 && bound < gap * gap)))
+          {
+            // Fewer than k points within the guess, and none left to find there: no guess.
+            candidates.clear();
+            bound = VTK_DOUBLE_MAX;
+            guessed = false;
+            ring = -1;
+            continue;
+          }
           else if (everything)
           {
             break;
           }
         }
         std::sort(candidates.begin(), candidates.end());
+        if (!useHeap && static_cast<int>(candidates.size()) == this->K)
+        {
+          hint = candidates.back().D2;
+        }
         for (const Candidate& cand : candidates)
         {
           row[n++] = cand.Id;
