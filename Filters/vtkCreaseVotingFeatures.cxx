@@ -233,6 +233,7 @@ int vtkCreaseVotingFeatures::RequestData(
   this->NoiseSigma = 0.0;
   const vtkIdType n = input->GetNumberOfPoints();
   vtkPoints* points = input->GetPoints();
+  const featurepoints::PointReader reader(points);
   auto normals = featurepoints::NewZeroArray<vtkFloatArray>("Normals", 3, n);
   auto votes = featurepoints::NewZeroArray<vtkFloatArray>("CreaseVotes", 1, n);
   auto gains = featurepoints::NewZeroArray<vtkFloatArray>("CreaseGain", 1, n);
@@ -274,8 +275,7 @@ int vtkCreaseVotingFeatures::RequestData(
       const vtkIdType id = ids[r];
       const int32_t* row = table.data() + r * k;
       const int count = featurepoints::RowLength(row, kn);
-      points->GetPoint(id, x);
-      featurepoints::GatherRelative(points, id, row, count, q.data(), x);
+      featurepoints::GatherRelative(reader, id, row, count, q.data(), x);
       const double outward[3] = { x[0] - center[0], x[1] - center[1], x[2] - center[2] };
       featurepoints::LocalPCA(q.data(), count, true, outward, lambda, nrm);
       for (int c = 0; c < 3; ++c)
@@ -300,7 +300,7 @@ int vtkCreaseVotingFeatures::RequestData(
       const vtkIdType id = ids[r];
       const int32_t* row = table.data() + r * k;
       const int count = featurepoints::RowLength(row, kf);
-      featurepoints::GatherRelative(points, id, row, count, s.Q.data(), x);
+      featurepoints::GatherRelative(reader, id, row, count, s.Q.data(), x);
       s.P.resize(static_cast<size_t>(count) + 1);
       s.N.resize(static_cast<size_t>(count) + 1);
       s.P[0].setZero();
@@ -365,7 +365,7 @@ int vtkCreaseVotingFeatures::RequestData(
       const vtkIdType id = ids[r];
       const int32_t* row = table.data() + r * k;
       const int count = featurepoints::RowLength(row, kf);
-      points->GetPoint(id, x);
+      reader.Get(id, x);
       int in = 0;
       for (int j = -1; j < count; ++j)
       {
@@ -375,7 +375,7 @@ int vtkCreaseVotingFeatures::RequestData(
           continue;
         }
         const CreaseFit& f = fits[rowOf[other]];
-        points->GetPoint(other, y);
+        reader.Get(other, y);
         double v[3];
         for (int c = 0; c < 3; ++c)
         {

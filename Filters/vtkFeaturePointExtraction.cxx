@@ -58,15 +58,16 @@ inline uint64_t MixBits(uint64_t key)
 }
 
 // Eq. 7: mean distance from point `id` to the first k entries of its row.
-inline double MeanDistance(vtkPoints* points, vtkIdType id, const int32_t* row, int k, double floor)
+inline double MeanDistance(
+  const featurepoints::PointReader& points, vtkIdType id, const int32_t* row, int k, double floor)
 {
   double x[3], y[3];
-  points->GetPoint(id, x);
+  points.Get(id, x);
   double sum = 0.0;
   int n = 0;
   for (; n < k && row[n] >= 0; ++n)
   {
-    points->GetPoint(row[n], y);
+    points.Get(row[n], y);
     sum += std::sqrt((y[0] - x[0]) * (y[0] - x[0]) + (y[1] - x[1]) * (y[1] - x[1]) +
       (y[2] - x[2]) * (y[2] - x[2]));
   }
@@ -90,7 +91,7 @@ struct ScoreParameters
 // Normal, SSI, PDI and F of each candidate, from its neighbour row and the m(j) of its neighbours.
 struct ScoreWorker
 {
-  vtkPoints* Points;
+  featurepoints::PointReader Points;
   const std::vector<vtkIdType>& Ids;
   const int32_t* Table;
   const double* MeanDistances; // m(j) for every point that some candidate uses
@@ -320,12 +321,13 @@ int vtkFeaturePointExtraction::RequestData(
   // m(j) for the candidates and for every point a candidate weighs in Eqs. 4 and 6.
   this->BeginStage("scores");
   const double floor = MinimumMeanDistance * d;
+  const featurepoints::PointReader reader(points);
   std::vector<double> meanDistance(n, 0.0);
   const int kd = this->DensityNeighbors;
   vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType r = begin; r < end; ++r)
     {
-      meanDistance[ids[r]] = MeanDistance(points, ids[r], table.data() + r * k, kd, floor);
+      meanDistance[ids[r]] = MeanDistance(reader, ids[r], table.data() + r * k, kd, floor);
     }
   });
   const int used = std::max(this->SSINeighbors,
@@ -358,7 +360,7 @@ int vtkFeaturePointExtraction::RequestData(
       for (vtkIdType r = begin; r < end; ++r)
       {
         meanDistance[neighbors[r]] =
-          MeanDistance(points, neighbors[r], neighborTable.data() + r * kd, kd, floor);
+          MeanDistance(reader, neighbors[r], neighborTable.data() + r * kd, kd, floor);
       }
     });
   }
@@ -368,7 +370,7 @@ int vtkFeaturePointExtraction::RequestData(
     this->GaussianRadiusFactor * d,
     { neighborhoods->GetCenter()[0], neighborhoods->GetCenter()[1],
       neighborhoods->GetCenter()[2] } };
-  ScoreWorker worker{ points, ids, table.data(), meanDistance.data(), parameters,
+  ScoreWorker worker{ reader, ids, table.data(), meanDistance.data(), parameters,
     normals->GetPointer(0), ssi->GetPointer(0), pdi->GetPointer(0), score->GetPointer(0), {} };
   vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), worker);
   this->UpdateProgress(0.9);

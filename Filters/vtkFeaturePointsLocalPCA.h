@@ -4,6 +4,8 @@
 #ifndef vtkFeaturePointsLocalPCA_h
 #define vtkFeaturePointsLocalPCA_h
 
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkPoints.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSmartPointer.h"
@@ -30,21 +32,77 @@ inline int RowLength(const int32_t* row, int k)
 }
 
 /**
+ * Reads point coordinates straight from the memory of float or double points (the two types
+ * vtkPoints is used with), through vtkPoints::GetPoint for any other type: the per-neighbour
+ * reads of the scoring loops are then not virtual calls.
+ */
+class PointReader
+{
+public:
+  explicit PointReader(vtkPoints* points)
+    : Points(points)
+  {
+    vtkDataArray* data = points ? points->GetData() : nullptr;
+    if (auto* d = vtkDoubleArray::FastDownCast(data))
+    {
+      this->Doubles = d->GetPointer(0);
+    }
+    else if (auto* f = vtkFloatArray::FastDownCast(data))
+    {
+      this->Floats = f->GetPointer(0);
+    }
+  }
+
+  void Get(vtkIdType id, double x[3]) const
+  {
+    if (this->Doubles)
+    {
+      const double* p = this->Doubles + 3 * id;
+      x[0] = p[0];
+      x[1] = p[1];
+      x[2] = p[2];
+    }
+    else if (this->Floats)
+    {
+      const float* p = this->Floats + 3 * id;
+      x[0] = p[0];
+      x[1] = p[1];
+      x[2] = p[2];
+    }
+    else
+    {
+      this->Points->GetPoint(id, x);
+    }
+  }
+
+private:
+  vtkPoints* Points;
+  const double* Doubles = nullptr;
+  const float* Floats = nullptr;
+};
+
+/**
  * Coordinates of the first `count` points of `row` relative to point `id` (written to `x`), into
  * `q` (x y z per point): working relative to the point costs no precision far from the origin.
  */
 inline void GatherRelative(
-  vtkPoints* points, vtkIdType id, const int32_t* row, int count, double* q, double x[3])
+  const PointReader& points, vtkIdType id, const int32_t* row, int count, double* q, double x[3])
 {
   double y[3];
-  points->GetPoint(id, x);
+  points.Get(id, x);
   for (int j = 0; j < count; ++j)
   {
-    points->GetPoint(row[j], y);
+    points.Get(row[j], y);
     q[3 * j] = y[0] - x[0];
     q[3 * j + 1] = y[1] - x[1];
     q[3 * j + 2] = y[2] - x[2];
   }
+}
+
+inline void GatherRelative(
+  vtkPoints* points, vtkIdType id, const int32_t* row, int count, double* q, double x[3])
+{
+  GatherRelative(PointReader(points), id, row, count, q, x);
 }
 
 /**
