@@ -47,16 +47,6 @@ constexpr vtkIdType BackgroundTarget = 65536;
 // Below this many sampled points, every non-candidate is scored (small clouds: cheap anyway).
 constexpr vtkIdType BackgroundMinimum = 512;
 
-inline uint64_t MixBits(uint64_t key)
-{
-  key ^= key >> 33;
-  key *= 0xff51afd7ed558ccdULL;
-  key ^= key >> 33;
-  key *= 0xc4ceb9fe1a85ec53ULL;
-  key ^= key >> 33;
-  return key;
-}
-
 // Eq. 7: mean distance from point `id` to the first k entries of its row.
 inline double MeanDistance(
   const featurepoints::PointReader& points, vtkIdType id, const int32_t* row, int k, double floor)
@@ -413,6 +403,7 @@ int vtkFeaturePointExtraction::SampleBackground(vtkPoints* points, const unsigne
   const uint64_t modulus = std::max<uint64_t>(BackgroundBlockModulus,
     static_cast<uint64_t>(others / BackgroundTarget));
   const double side = BackgroundBlockFactor * d;
+  const double origin[3] = { bounds[0], bounds[2], bounds[4] };
   double x[3];
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -421,14 +412,7 @@ int vtkFeaturePointExtraction::SampleBackground(vtkPoints* points, const unsigne
       continue;
     }
     points->GetPoint(i, x);
-    uint64_t key = 0;
-    for (int c = 0; c < 3; ++c)
-    {
-      // Block coordinates from the bounding box's corner: the same under scaling and moving.
-      const double b = std::min(std::floor((x[c] - bounds[2 * c]) / side), double(1 << 21));
-      key = key * 0x100000001b3ULL + static_cast<uint64_t>(static_cast<int64_t>(b));
-    }
-    if (MixBits(key) % modulus == 0)
+    if (featurepoints::InSampledRegion(x, origin, side, modulus))
     {
       background.push_back(i);
     }

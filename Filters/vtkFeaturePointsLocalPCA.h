@@ -32,6 +32,30 @@ inline int RowLength(const int32_t* row, int k)
 }
 
 /**
+ * Whether point x falls in a sampled region: space is cut into cubes of side `side` from `origin`,
+ * and one cube in `modulus` is sampled, chosen by a hash of its grid coordinates. The choice
+ * depends on where the point is, not on the order of the points, and not on scale or offset when
+ * origin and side follow the cloud. The voxel screen and the threshold's background sample use it.
+ */
+inline bool InSampledRegion(const double x[3], const double origin[3], double side, uint64_t modulus)
+{
+  uint64_t key = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    // Clamped before the conversion: a far outlier stretches the box (then all points share a few
+    // regions and the sample is all or nothing, which is slower, not wrong).
+    const double r = std::min(std::floor((x[c] - origin[c]) / side), double((1 << 21) - 1));
+    key = key * 0x100000001b3ULL + static_cast<uint64_t>(static_cast<int64_t>(r));
+  }
+  key ^= key >> 33;
+  key *= 0xff51afd7ed558ccdULL;
+  key ^= key >> 33;
+  key *= 0xc4ceb9fe1a85ec53ULL;
+  key ^= key >> 33;
+  return key % modulus == 0;
+}
+
+/**
  * Reads point coordinates straight from the memory of float or double points (the two types
  * vtkPoints is used with), through vtkPoints::GetPoint for any other type: the per-neighbour
  * reads of the scoring loops are then not virtual calls.

@@ -5,6 +5,7 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
+#include "vtkFeaturePointsLocalPCA.h"
 #include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -628,6 +629,7 @@ bool vtkVoxelDensityContrastFilter::SampleShowsContrast(vtkPointCloudNeighborhoo
     return true;
   }
   const double side = 20.0 * diagonal / std::sqrt(static_cast<double>(m));
+  const double origin[3] = { b[0], b[2], b[4] };
   std::vector<unsigned char> sampled(n, 0);
   vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
     double x[3];
@@ -638,20 +640,7 @@ bool vtkVoxelDensityContrastFilter::SampleShowsContrast(vtkPointCloudNeighborhoo
         continue;
       }
       points->GetPoint(i, x);
-      uint64_t key = 0;
-      for (int c = 0; c < 3; ++c)
-      {
-        // Clamped before the conversion: a far outlier stretches the box (then all points share
-        // a few regions and the sample is all or nothing, which is slower, not wrong).
-        const double r = std::min(std::floor((x[c] - b[2 * c]) / side), double(KeyRange - 1));
-        key = key * 0x100000001b3ULL + static_cast<uint64_t>(static_cast<int64_t>(r));
-      }
-      key ^= key >> 33;
-      key *= 0xff51afd7ed558ccdULL;
-      key ^= key >> 33;
-      key *= 0xc4ceb9fe1a85ec53ULL;
-      key ^= key >> 33;
-      sampled[i] = key % SampleModulus == 0 ? 1 : 0;
+      sampled[i] = featurepoints::InSampledRegion(x, origin, side, SampleModulus) ? 1 : 0;
     }
   });
   std::vector<vtkIdType> ids;
