@@ -352,6 +352,7 @@ bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)
   this->LocatorToPoint.clear();
   this->Valid.clear();
   this->NearestDistances.clear();
+  this->NearestKnown.clear();
   this->NumberOfPoints = points ? points->GetNumberOfPoints() : 0;
   this->NumberOfValidPoints = 0;
   this->FirstInvalidPoint = -1;
@@ -587,16 +588,49 @@ double vtkPointCloudNeighborhoods::ComputeMeanSpacing()
   {
     return 0.0;
   }
-  const std::vector<vtkIdType> ids = this->GetValidIds();
+  // The points whose nearest distance FindNearestDistances() has not found yet.
+  std::vector<vtkIdType> ids;
+  ids.reserve(this->NumberOfValidPoints);
+  for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
+  {
+    if (this->Valid[i] && (this->NearestKnown.empty() || !this->NearestKnown[i]))
+    {
+      ids.push_back(i);
+    }
+  }
   std::vector<int32_t> table;
   std::vector<double> nearest;
   this->FindNearestNeighbors(1, ids, table, &nearest);
-  this->NearestDistances.assign(this->NumberOfPoints, 0.0);
+  if (this->NearestKnown.empty())
+  {
+    this->NearestDistances.assign(this->NumberOfPoints, 0.0);
+  }
   for (size_t r = 0; r < ids.size(); ++r)
   {
     this->NearestDistances[ids[r]] = nearest[r];
   }
   return this->FinishMeanSpacing();
+}
+
+void vtkPointCloudNeighborhoods::FindNearestDistances(
+  const std::vector<vtkIdType>& ids, std::vector<double>& distances)
+{
+  std::vector<int32_t> table;
+  this->FindNearestNeighbors(1, ids, table, &distances);
+  if (!this->Searchable || this->MeanSpacing >= 0.0)
+  {
+    return;
+  }
+  if (this->NearestKnown.empty())
+  {
+    this->NearestDistances.assign(this->NumberOfPoints, 0.0);
+    this->NearestKnown.assign(this->NumberOfPoints, 0);
+  }
+  for (size_t r = 0; r < ids.size(); ++r)
+  {
+    this->NearestDistances[ids[r]] = distances[r];
+    this->NearestKnown[ids[r]] = 1;
+  }
 }
 
 double vtkPointCloudNeighborhoods::ComputeMeanSpacing(

@@ -98,6 +98,14 @@ public:
   double ComputeMeanSpacing(const std::vector<vtkIdType>& ids, const std::vector<int32_t>& table, int k);
 
   /**
+   * Distance from each listed point to its nearest other point (`distances[r]` for `ids[r]`, 0
+   * for an invalid point or one that coincides with another), found with one 1-nearest query each.
+   * The values are kept, so that a later ComputeMeanSpacing() does not search these points again
+   * (the voxel screen's sample, for instance).
+   */
+  void FindNearestDistances(const std::vector<vtkIdType>& ids, std::vector<double>& distances);
+
+  /**
    * The k nearest other valid points of each point in `ids` (ascending point ids or any order),
    * nearest first, written to `table` (ids.size() * k entries, row r for ids[r]). Rows of invalid
    * points, and the tail of rows when fewer than k other valid points exist, hold -1.
@@ -163,6 +171,7 @@ protected:
   std::vector<vtkIdType> LocatorToPoint; // empty when all points are valid
   std::vector<unsigned char> Valid;
   std::vector<double> NearestDistances;
+  std::vector<unsigned char> NearestKnown; // FindNearestDistances() filled NearestDistances here
   vtkIdType NumberOfPoints = 0;
   vtkIdType NumberOfValidPoints = 0;
   vtkIdType FirstInvalidPoint = -1;

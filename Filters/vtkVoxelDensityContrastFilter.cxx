@@ -655,9 +655,9 @@ bool vtkVoxelDensityContrastFilter::SampleShowsContrast(vtkPointCloudNeighborhoo
   {
     return true;
   }
-  std::vector<int32_t> table;
+  // Kept by `neighborhoods`: the full test's 1-nearest pass will not search these points again.
   std::vector<double> found;
-  neighborhoods->FindNearestNeighbors(1, ids, table, &found);
+  neighborhoods->FindNearestDistances(ids, found);
   // The sample's mean spacing, as vtkPointCloudNeighborhoods measures the cloud's: coincident
   // points and isolated outliers (over 10 times the median) left out.
   std::vector<double> positive;
