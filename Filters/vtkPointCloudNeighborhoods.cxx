@@ -42,13 +42,74 @@ struct vtkPointCloudNeighborhoods::SearchGrid
     double d2 = 0.0;
     for (int a = 0; a < 3; ++a)
     {
-      const double lo = this->Origin[a] + c[a] * this->Spacing;
-      const double gap = c[a] > 0 && x[a] < lo
-        ? lo - x[a]
-        : (c[a] < this->Dims[a] - 1 && x[a] > lo + this->Spacing ? x[a] - lo - this->Spacing : 0.0);
+      const double gap = this->AxisGap(a, c[a], x[a]);
       d2 += gap * gap;
     }
     return d2;
+  }
+  // Distance from coordinate xa to the slab of cells c along axis a.
+  double AxisGap(int a, int c, double xa) const
+  {
+    const double lo = this->Origin[a] + c * this->Spacing;
+    return c > 0 && xa < lo
+      ? lo - xa
+      : (c < this->Dims[a] - 1 && xa > lo + this->Spacing ? xa - lo - this->Spacing : 0.0);
+  }
+  // The cells at Chebyshev distance `ring` from cell c: whole rows on the block's faces, the two
+  // end cells of the rows inside it.
+  template <typename F>
+  void ForEachCellOfRing(const int c[3], int ring, F&& f) const
+  {
+    const int lo[3] = { std::max(c[0] - ring, 0), std::max(c[1] - ring, 0),
+      std::max(c[2] - ring, 0) };
+    const int hi[3] = { std::min(c[0] + ring, this->Dims[0] - 1),
+      std::min(c[1] + ring, this->Dims[1] - 1), std::min(c[2] + ring, this->Dims[2] - 1) };
+    for (int k = lo[2]; k <= hi[2]; ++k)
+    {
+      const bool kFace = k == c[2] - ring || k == c[2] + ring;
+      for (int j = lo[1]; j <= hi[1]; ++j)
+      {
+        if (kFace || j == c[1] - ring || j == c[1] + ring)
+        {
+          for (int i = lo[0]; i <= hi[0]; ++i)
+          {
+            f(i, j, k);
+          }
+        }
+        else
+        {
+          if (c[0] - ring >= 0)
+          {
+            f(c[0] - ring, j, k);
+          }
+          if (c[0] + ring < this->Dims[0])
+          {
+            f(c[0] + ring, j, k);
+          }
+        }
+      }
+    }
+  }
+  // Distance from x to the cells outside the block of rings 0..ring around cell c (any point not
+  // yet seen lies there); `everything` tells that the block covers the whole grid.
+  double RingGap(const int c[3], int ring, const double x[3], bool& everything) const
+  {
+    everything = true;
+    double gap = VTK_DOUBLE_MAX;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (c[a] - ring > 0)
+      {
+        gap = std::min(gap, x[a] - (this->Origin[a] + (c[a] - ring) * this->Spacing));
+        everything = false;
+      }
+      if (c[a] + ring < this->Dims[a] - 1)
+      {
+        gap = std::min(gap, this->Origin[a] + (c[a] + ring + 1) * this->Spacing - x[a]);
+        everything = false;
+      }
+    }
+    return gap;
   }
   // The cell of x, clamped to the grid: points beyond the robust box sit in its border cells.
   void CellOf(const double x[3], int c[3]) const
@@ -153,8 +214,115 @@ struct GridNeighborsWorker
 
   void Initialize() {}
 
+  // k = 1 (the spacing and the voxel densities ask it of every point): the best candidate is kept
+  // in registers rather than in a heap, the cells of the first ring are pruned with per-axis gaps
+  // computed once, and the search stops at the same ring as the general one, with the same result.
+  Candidate NearestOne(const double* x, int32_t id) const
+  {
+    const auto& g = *this->Grid;
+    Candidate best{ VTK_DOUBLE_MAX, -1 };
+    auto scanCell = [&](vtkIdType cell) {
+      const int32_t last = g.CellStart[cell + 1];
+      const double* y = g.SortedPoints.data() + 3 * static_cast<size_t>(g.CellStart[cell]);
+      for (int32_t s = g.CellStart[cell]; s < last; ++s, y += 3)
+      {
+        const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        if (d2 <= best.D2)
+        {
+          const int32_t other = g.SortedIds[s];
+          if (other != id && (d2 < best.D2 || other < best.Id))
+          {
+            best = Candidate{ d2, other };
+          }
+        }
+      }
+    };
+    int c[3];
+    g.CellOf(x, c);
+    // Per axis, the squared gap from x to the cells c - 1, c, c + 1 (-1: outside the grid).
+    double gap2[3][3];
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        const int ca = c[a] + d - 1;
+        const double gap = ca >= 0 && ca < g.Dims[a] ? g.AxisGap(a, ca, x[a]) : -1.0;
+        gap2[a][d] = gap < 0.0 ? -1.0 : gap * gap;
+      }
+    }
+    scanCell(g.Index(c[0], c[1], c[2]));
+    // The general rule of the k-nearest search, ring by ring: stop when the best distance is
+    // below the distance to the unsearched cells (or nothing is left).
+    for (int ring = 0;; ++ring)
+    {
+      if (ring == 1)
+      {
+        for (int dk = 0; dk < 3; ++dk)
+        {
+          if (gap2[2][dk] < 0.0)
+          {
+            continue;
+          }
+          for (int dj = 0; dj < 3; ++dj)
+          {
+            if (gap2[1][dj] < 0.0)
+            {
+              continue;
+            }
+            for (int di = 0; di < 3; ++di)
+            {
+              if (gap2[0][di] < 0.0 || (di == 1 && dj == 1 && dk == 1))
+              {
+                continue;
+              }
+              // The sum in BoxDistance2's order, so that the same cells are pruned.
+              if (best.Id >= 0 && gap2[0][di] + gap2[1][dj] + gap2[2][dk] > best.D2)
+              {
+                continue;
+              }
+              scanCell(g.Index(c[0] + di - 1, c[1] + dj - 1, c[2] + dk - 1));
+            }
+          }
+        }
+      }
+      else if (ring > 1)
+      {
+        g.ForEachCellOfRing(c, ring, [&](int i, int j, int k) {
+          if (best.Id < 0 || g.BoxDistance2(i, j, k, x) <= best.D2)
+          {
+            scanCell(g.Index(i, j, k));
+          }
+        });
+      }
+      bool everything;
+      const double gap = g.RingGap(c, ring, x, everything);
+      if (best.Id >= 0 ? (everything || (gap > 0.0 && best.D2 < gap * gap)) : everything)
+      {
+        return best;
+      }
+    }
+  }
+
   void operator()(vtkIdType begin, vtkIdType end)
   {
+    if (this->K == 1)
+    {
+      const auto& g = *this->Grid;
+      for (vtkIdType o = begin; o < end; ++o)
+      {
+        const int32_t slot = this->Slots[o];
+        const vtkIdType r = this->Rows[o];
+        const Candidate best =
+          this->NearestOne(g.SortedPoints.data() + 3 * static_cast<size_t>(slot), g.SortedIds[slot]);
+        this->Table[r] = best.Id;
+        if (this->Nearest)
+        {
+          this->Nearest[r] = best.Id >= 0 ? std::sqrt(best.D2) : 0.0;
+        }
+      }
+      return;
+    }
     std::vector<Candidate>& candidates = this->Candidates.Local();
     const auto& g = *this->Grid;
     // Large k: the k-th squared distance of the previous query, a guess for this one (queries come
@@ -182,10 +350,6 @@ struct GridNeighborsWorker
         g.CellOf(x, c);
         for (int ring = 0;; ++ring)
         {
-          const int lo[3] = { std::max(c[0] - ring, 0), std::max(c[1] - ring, 0),
-            std::max(c[2] - ring, 0) };
-          const int hi[3] = { std::min(c[0] + ring, g.Dims[0] - 1),
-            std::min(c[1] + ring, g.Dims[1] - 1), std::min(c[2] + ring, g.Dims[2] - 1) };
           auto scan = [&](int i, int j, int k) {
             // Skip a cell whose box lies farther than the k-th best distance so far: none of its
             // points can enter (the border cells reach to infinity, they hold the clamped points).
@@ -227,49 +391,9 @@ struct GridNeighborsWorker
               }
             }
           };
-          // The cells at Chebyshev distance `ring` from the query's cell: whole rows on the
-          // block's faces, the two end cells of the rows inside it.
-          for (int k = lo[2]; k <= hi[2]; ++k)
-          {
-            const bool kFace = k == c[2] - ring || k == c[2] + ring;
-            for (int j = lo[1]; j <= hi[1]; ++j)
-            {
-              if (kFace || j == c[1] - ring || j == c[1] + ring)
-              {
-                for (int i = lo[0]; i <= hi[0]; ++i)
-                {
-                  scan(i, j, k);
-                }
-              }
-              else
-              {
-                if (c[0] - ring >= 0)
-                {
-                  scan(c[0] - ring, j, k);
-                }
-                if (c[0] + ring < g.Dims[0])
-                {
-                  scan(c[0] + ring, j, k);
-                }
-              }
-            }
-          }
-          // Any point not yet seen lies outside the searched block of cells.
-          bool everything = true;
-          double gap = VTK_DOUBLE_MAX;
-          for (int a = 0; a < 3; ++a)
-          {
-            if (c[a] - ring > 0)
-            {
-              gap = std::min(gap, x[a] - (g.Origin[a] + (c[a] - ring) * g.Spacing));
-              everything = false;
-            }
-            if (c[a] + ring < g.Dims[a] - 1)
-            {
-              gap = std::min(gap, g.Origin[a] + (c[a] + ring + 1) * g.Spacing - x[a]);
-              everything = false;
-            }
-          }
+          g.ForEachCellOfRing(c, ring, scan);
+          bool everything;
+          const double gap = g.RingGap(c, ring, x, everything);
           // Small k: a bounded max-heap of the k best. Large k: the candidates nearer than the
           // k-th best so far are kept and the k-th selected once per ring, which costs less than
           // a heap.

@@ -307,6 +307,7 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
   const vtkIdType nBlocks = (n + Block - 1) / Block;
   std::vector<std::array<double, 6>> blockBox(nBlocks);
   std::vector<vtkIdType> blockValid(nBlocks + 1, 0);
+  const featurepoints::PointReader reader(points);
   vtkSMPTools::For(0, nBlocks, [&](vtkIdType first, vtkIdType last) {
     double y[3];
     for (vtkIdType blk = first; blk < last; ++blk)
@@ -318,7 +319,7 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
       {
         if (isValid(i))
         {
-          points->GetPoint(i, y);
+          reader.Get(i, y);
           ++count;
           for (int c = 0; c < 3; ++c)
           {
@@ -385,7 +386,7 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
         {
           continue;
         }
-        points->GetPoint(i, y);
+        reader.Get(i, y);
         int64_t ijk[3];
         bool wasClamped = false;
         for (int c = 0; c < 3; ++c)
@@ -427,13 +428,17 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
   std::vector<double> spacingSum(nVoxels, 0.0);
   if (block)
   {
-    for (vtkIdType v = 0; v < nVoxels; ++v)
-    {
-      for (vtkIdType e = start[v]; e < start[v + 1]; ++e)
+    vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType v = begin; v < end; ++v)
       {
-        spacingSum[v] += nearest[keyed[e].second];
+        double sum = 0.0;
+        for (vtkIdType e = start[v]; e < start[v + 1]; ++e)
+        {
+          sum += nearest[keyed[e].second];
+        }
+        spacingSum[v] = sum;
       }
-    }
+    });
   }
   std::vector<double> level(nVoxels);
   std::vector<double> blockCount(nVoxels);
@@ -569,19 +574,16 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
       });
     }
   }
-  std::vector<unsigned char> keep(nVoxels, 0);
-  vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
-    SparseGrid::Sweep neighbors(grid);
-    for (vtkIdType v = begin; v < end; ++v)
+  // Kept: the contrast voxels and their occupied neighbours (the relation is symmetric, so only
+  // the contrast voxels, a minority, look at their neighbours).
+  std::vector<unsigned char> keep(contrast);
+  for (vtkIdType v = 0; v < nVoxels; ++v)
+  {
+    if (contrast[v])
     {
-      bool found = contrast[v] != 0;
-      if (!found)
-      {
-        neighbors(v, [&](vtkIdType w) { found = found || contrast[w] != 0; });
-      }
-      keep[v] = found ? 1 : 0;
+      grid.ForEachNeighbor(v, [&](vtkIdType w) { keep[w] = 1; });
     }
-  });
+  }
 
   vtkIdType nContrast = 0, nCandidates = 0;
   for (vtkIdType v = 0; v < nVoxels; ++v)
