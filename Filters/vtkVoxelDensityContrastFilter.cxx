@@ -574,15 +574,36 @@ vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
       });
     }
   }
-  // Kept: the contrast voxels and their occupied neighbours (the relation is symmetric, so only
-  // the contrast voxels, a minority, look at their neighbours).
+  // Kept: the contrast voxels and their occupied neighbours. The relation is symmetric, so
+  // whichever side is the minority looks at its neighbours: the contrast voxels mark theirs
+  // (BLOCK_SPACING, where they are few), or every other voxel looks for one among its own
+  // (VOXEL_COUNTS, where nearly every voxel shows contrast).
   std::vector<unsigned char> keep(contrast);
-  for (vtkIdType v = 0; v < nVoxels; ++v)
+  const vtkIdType contrastVoxels = std::count(contrast.begin(), contrast.end(), 1);
+  if (2 * contrastVoxels < nVoxels)
   {
-    if (contrast[v])
+    for (vtkIdType v = 0; v < nVoxels; ++v)
     {
-      grid.ForEachNeighbor(v, [&](vtkIdType w) { keep[w] = 1; });
+      if (contrast[v])
+      {
+        grid.ForEachNeighbor(v, [&](vtkIdType w) { keep[w] = 1; });
+      }
     }
+  }
+  else
+  {
+    vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+      SparseGrid::Sweep neighbors(grid);
+      for (vtkIdType v = begin; v < end; ++v)
+      {
+        if (!contrast[v])
+        {
+          bool found = false;
+          neighbors(v, [&](vtkIdType w) { found = found || contrast[w] != 0; });
+          keep[v] = found ? 1 : 0;
+        }
+      }
+    });
   }
 
   vtkIdType nContrast = 0, nCandidates = 0;
