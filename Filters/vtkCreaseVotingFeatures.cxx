@@ -233,7 +233,6 @@ int vtkCreaseVotingFeatures::RequestData(
   this->NoiseSigma = 0.0;
   const vtkIdType n = input->GetNumberOfPoints();
   vtkPoints* points = input->GetPoints();
-  const featurepoints::PointReader reader(points);
   auto normals = featurepoints::NewZeroArray<vtkFloatArray>("Normals", 3, n);
   auto votes = featurepoints::NewZeroArray<vtkFloatArray>("CreaseVotes", 1, n);
   auto gains = featurepoints::NewZeroArray<vtkFloatArray>("CreaseGain", 1, n);
@@ -252,6 +251,7 @@ int vtkCreaseVotingFeatures::RequestData(
   {
     return finish();
   }
+  const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
   const double d = this->MeanSpacing;
   const vtkIdType rows = static_cast<vtkIdType>(ids.size());
   std::vector<vtkIdType> rowOf(n, -1);

@@ -76,7 +76,7 @@ int vtkCurvatureDensityFeatures::RequestData(
     return finish();
   }
   // Pass 1: normal, curvature and density of each point.
-  featurepoints::LocalShapeWorker worker{ input->GetPoints(), ids, table.data(), k,
+  featurepoints::LocalShapeWorker worker{ neighborhoods->GetPoints(), ids, table.data(), k,
     neighborhoods->GetCenter(), normals->GetPointer(0), curvature->GetPointer(0),
     density->GetPointer(0), {} };
   vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), worker);

@@ -12,12 +12,14 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace
 {
@@ -148,6 +150,7 @@ void vtkFeaturePointDetector::ResetFigures()
   this->ThresholdUsed = 0.0;
   this->NumberOfCandidates = 0;
   this->NumberOfFeaturePoints = 0;
+  this->OriginalIds.clear();
 }
 
 double vtkFeaturePointDetector::AutomaticThreshold(std::vector<double>& scores, double sigmas)
@@ -221,6 +224,10 @@ bool vtkFeaturePointDetector::PrepareNeighborhoods(
                     << " needed for neighbourhoods of " << k
                     << " points: all scores are 0 and no point is a feature point.");
     return false;
+  }
+  if (!neighborhoods->ReorderSpatially(this->OriginalIds))
+  {
+    this->OriginalIds.clear();
   }
   return true;
 }
@@ -301,6 +308,33 @@ int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* out
 {
   this->BeginStage("output");
   const vtkIdType n = input->GetNumberOfPoints();
+  if (static_cast<vtkIdType>(this->OriginalIds.size()) == n)
+  {
+    // Back to the input's order: tuple i of the renumbered cloud goes to OriginalIds[i].
+    std::vector<vtkDataArray*> all(arrays);
+    all.push_back(mask);
+    std::vector<unsigned char> buffer;
+    for (vtkDataArray* a : all)
+    {
+      if (!a || a->GetNumberOfTuples() != n)
+      {
+        continue;
+      }
+      const size_t bytes = static_cast<size_t>(a->GetDataTypeSize()) * a->GetNumberOfComponents();
+      unsigned char* data = static_cast<unsigned char*>(a->GetVoidPointer(0));
+      buffer.resize(bytes * static_cast<size_t>(n));
+      const int32_t* original = this->OriginalIds.data();
+      vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          std::memcpy(buffer.data() + bytes * original[i], data + bytes * i, bytes);
+        }
+      });
+      std::memcpy(data, buffer.data(), buffer.size());
+      a->Modified();
+    }
+  }
+  this->OriginalIds.clear();
   vtkPoints* points = input->GetPoints();
   vtkNew<vtkPolyData> full;
   if (points)

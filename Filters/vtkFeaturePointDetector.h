@@ -145,6 +145,10 @@ protected:
   /**
    * Builds `neighborhoods` over the input's points and checks that neighbourhoods of k points
    * exist. Warns (naming the problem) and returns false when nothing can be scored.
+   * On success the cloud is renumbered in a spatially coherent order
+   * (vtkPointCloudNeighborhoods::ReorderSpatially): the method then reads its points from
+   * `neighborhoods->GetPoints()` and fills its arrays in that numbering, and AssembleOutput()
+   * puts them back in the input's order. The results are those of the input's order, faster.
    */
   bool PrepareNeighborhoods(vtkPoints* points, vtkIdType n, int k,
     vtkPointCloudNeighborhoods* neighborhoods);
@@ -174,7 +178,9 @@ protected:
 
   /**
    * Assembles the output (see the class comment) from the input, the method's arrays (n tuples
-   * each) and the mask; the score array becomes the active scalars.
+   * each) and the mask; the score array becomes the active scalars. After a renumbering (see
+   * PrepareNeighborhoods) the arrays and the mask are first put back in the input's order, in
+   * place.
    */
   int AssembleOutput(vtkPointSet* input, vtkPolyData* output,
     const std::vector<vtkDataArray*>& arrays, vtkUnsignedCharArray* mask);
@@ -194,6 +200,8 @@ protected:
   double ThresholdUsed = 0.0;
   vtkIdType NumberOfCandidates = 0;
   vtkIdType NumberOfFeaturePoints = 0;
+  // Input id of each point of the renumbered cloud (empty: not renumbered).
+  std::vector<int32_t> OriginalIds;
   std::vector<std::string> StageNames;
   std::vector<double> StageTimes;
   std::chrono::steady_clock::time_point StageStart;

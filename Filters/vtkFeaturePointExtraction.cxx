@@ -214,6 +214,7 @@ int vtkFeaturePointExtraction::RequestData(
   {
     return finish();
   }
+  points = neighborhoods->GetPoints(); // renumbered (see PrepareNeighborhoods)
 
   // Without the pre-filter every point is scored: its k-nearest table also gives the spacing, so
   // each point is searched once. With it, a 1-nearest pass over all points comes first.

@@ -2,6 +2,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkIdList.h"
@@ -700,6 +701,46 @@ std::vector<vtkIdType> vtkPointCloudNeighborhoods::GetValidIds() const
     }
   }
   return ids;
+}
+
+bool vtkPointCloudNeighborhoods::ReorderSpatially(std::vector<int32_t>& originalIds)
+{
+  if (!this->Searchable || !this->Grid || this->MeanSpacing >= 0.0 ||
+    !this->NearestKnown.empty() || !this->NearestDistances.empty())
+  {
+    return false;
+  }
+  SearchGrid& g = *this->Grid;
+  const vtkIdType n = this->NumberOfPoints;
+  const vtkIdType m = this->NumberOfValidPoints;
+  // New id i < m is slot i of the grid; the invalid points follow, with their own coordinates.
+  originalIds.resize(n);
+  std::copy(g.SortedIds.begin(), g.SortedIds.end(), originalIds.begin());
+  g.SortedPoints.resize(3 * static_cast<size_t>(n));
+  vtkIdType next = m;
+  for (vtkIdType i = 0; i < n && next < n; ++i)
+  {
+    if (!this->Valid[i])
+    {
+      originalIds[next] = static_cast<int32_t>(i);
+      this->Points->GetPoint(i, g.SortedPoints.data() + 3 * static_cast<size_t>(next));
+      ++next;
+    }
+  }
+  std::iota(g.SortedIds.begin(), g.SortedIds.end(), 0);
+  std::iota(g.SlotOf.begin(), g.SlotOf.begin() + m, 0);
+  std::fill(g.SlotOf.begin() + m, g.SlotOf.end(), -1);
+  std::fill(this->Valid.begin(), this->Valid.begin() + m, 1);
+  std::fill(this->Valid.begin() + m, this->Valid.end(), 0);
+  this->FirstInvalidPoint = m < n ? m : -1;
+
+  // The renumbered cloud reads the grid's coordinates in place (the array does not own them).
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetArray(g.SortedPoints.data(), 3 * n, 1);
+  this->Points = vtkSmartPointer<vtkPoints>::New();
+  this->Points->SetData(coordinates);
+  return true;
 }
 
 double vtkPointCloudNeighborhoods::ComputeMeanSpacing()

@@ -83,6 +83,24 @@ public:
   std::vector<vtkIdType> GetValidIds() const;
 
   /**
+   * Renumber the cloud in a spatially coherent order, right after Build() (GRID only): the valid
+   * points in the grid's cell order (ascending ids within a cell), then the invalid ones in their
+   * given order. From then on GetPoints() is the cloud in that order (the grid's own copy of the
+   * coordinates, in double precision, not a new one), every id this object takes or returns is a
+   * position in it, and `originalIds[i]` is the id, in the cloud given to Build(), of point i.
+   *
+   * Why: a filter that scores points reads, for each, the coordinates and per-point values of its
+   * neighbours. In a cloud stored in random order (a scanner's, a sampler's, a shuffled file's)
+   * these reads are scattered over the whole cloud; in this order neighbours sit near each other
+   * in memory and consecutive queries share them, which makes the whole filter faster (README,
+   * "Speed"). The order depends on the points only, not on the number of threads.
+   *
+   * Returns false, and changes nothing, with STATIC_POINT_LOCATOR, before a successful Build(), or
+   * once a spacing or a neighbour table has been computed.
+   */
+  bool ReorderSpatially(std::vector<int32_t>& originalIds);
+
+  /**
    * Compute the mean spacing d (see the class comment) with one nearest-neighbour query per valid
    * point. Returns 0 when no two valid points are apart (all coincide, or a single point).
    * The result is cached until the next Build().
@@ -149,7 +167,7 @@ public:
   /** Why Build() failed. */
   const std::string& GetErrorText() const { return this->ErrorText; }
 
-  /** The points given to Build(). */
+  /** The points given to Build(), or their renumbered copy after ReorderSpatially(). */
   vtkPoints* GetPoints() const;
 
   /**

@@ -44,7 +44,7 @@ int vtkSurfaceVariationFeatures::RequestData(
   if (this->SearchAllPoints(
         input->GetPoints(), n, this->NumberOfNeighbors, neighborhoods, ids, table, 0.7))
   {
-    featurepoints::LocalShapeWorker worker{ input->GetPoints(), ids, table.data(),
+    featurepoints::LocalShapeWorker worker{ neighborhoods->GetPoints(), ids, table.data(),
       this->NumberOfNeighbors, neighborhoods->GetCenter(), normals->GetPointer(0),
       variation->GetPointer(0), nullptr, {} };
     vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), worker);
