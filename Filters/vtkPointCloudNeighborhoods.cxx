@@ -212,8 +212,76 @@ struct GridNeighborsWorker
     bool operator<(const Candidate& o) const { return D2 < o.D2 || (D2 == o.D2 && Id < o.Id); }
   };
   vtkSMPThreadLocal<std::vector<Candidate>> Candidates;
+  struct BucketScratch
+  {
+    std::vector<Candidate> Sorted;
+    std::vector<int32_t> Start;
+  };
+  vtkSMPThreadLocal<BucketScratch> Buckets;
 
   void Initialize() {}
+
+  // Sorts the candidates by (distance, id) and keeps the first `keep`: a bucket sort on the
+  // squared distance (about one candidate per bucket, buckets in distance order, each bucket then
+  // sorted exactly), which costs a few passes where nth_element and sort compare and mispredict
+  // O(m log m) times. Buckets past the one that holds the keep-th candidate are never sorted.
+  static void SortNearest(std::vector<Candidate>& candidates, size_t keep, BucketScratch& scratch)
+  {
+    const size_t m = candidates.size();
+    if (m <= 16)
+    {
+      std::sort(candidates.begin(), candidates.end());
+      candidates.resize(std::min(m, keep));
+      return;
+    }
+    double largest = 0.0;
+    for (const Candidate& c : candidates)
+    {
+      largest = std::max(largest, c.D2);
+    }
+    const int32_t buckets = static_cast<int32_t>(m);
+    // Monotone in D2: a larger distance never lands in an earlier bucket.
+    const double scale = largest > 0.0 ? (buckets - 0.5) / largest : 0.0;
+    auto bucketOf = [scale, buckets](double d2) {
+      return std::min(buckets - 1, static_cast<int32_t>(d2 * scale));
+    };
+    std::vector<int32_t>& start = scratch.Start;
+    start.assign(static_cast<size_t>(buckets) + 1, 0);
+    for (const Candidate& c : candidates)
+    {
+      ++start[bucketOf(c.D2) + 1];
+    }
+    for (int32_t b = 0; b < buckets; ++b)
+    {
+      start[b + 1] += start[b];
+    }
+    std::vector<Candidate>& sorted = scratch.Sorted;
+    sorted.resize(m);
+    {
+      // Scatter, using start[b] as the next free slot of bucket b (restored below).
+      for (const Candidate& c : candidates)
+      {
+        sorted[start[bucketOf(c.D2)]++] = c;
+      }
+      for (int32_t b = buckets; b > 0; --b)
+      {
+        start[b] = start[b - 1];
+      }
+      start[0] = 0;
+    }
+    size_t done = 0;
+    for (int32_t b = 0; b < buckets && done < keep; ++b)
+    {
+      if (start[b + 1] - start[b] > 1)
+      {
+        std::sort(sorted.begin() + start[b], sorted.begin() + start[b + 1]);
+      }
+      done = static_cast<size_t>(start[b + 1]);
+    }
+    const size_t kept = std::min(m, keep);
+    std::copy(sorted.begin(), sorted.begin() + kept, candidates.begin());
+    candidates.resize(kept);
+  }
 
   // k = 1 (the spacing and the voxel densities ask it of every point): the best candidate is kept
   // in registers rather than in a heap, the cells of the first ring are pruned with per-axis gaps
@@ -325,6 +393,7 @@ struct GridNeighborsWorker
       return;
     }
     std::vector<Candidate>& candidates = this->Candidates.Local();
+    BucketScratch& bucketScratch = this->Buckets.Local();
     const auto& g = *this->Grid;
     // Large k: the k-th squared distance of the previous query, a guess for this one (queries come
     // in grid order, so neighbouring queries follow each other). The result never depends on it.
@@ -396,8 +465,8 @@ struct GridNeighborsWorker
           bool everything;
           const double gap = g.RingGap(c, ring, x, everything);
           // Small k: a bounded max-heap of the k best. Large k: the candidates nearer than the
-          // k-th best so far are kept and the k-th selected once per ring, which costs less than
-          // a heap.
+          // k-th best so far are kept, and once per ring they are sorted (SortNearest) and cut
+          // to k, which costs less than a heap.
           if (useHeap && static_cast<int>(candidates.size()) == this->K)
           {
             if (everything || (gap > 0.0 && candidates.front().D2 < gap * gap))
@@ -407,9 +476,7 @@ struct GridNeighborsWorker
           }
           else if (!useHeap && static_cast<int>(candidates.size()) >= this->K)
           {
-            std::nth_element(
-              candidates.begin(), candidates.begin() + (this->K - 1), candidates.end());
-            candidates.resize(this->K);
+            SortNearest(candidates, static_cast<size_t>(this->K), bucketScratch);
             bound = candidates[this->K - 1].D2;
             if (everything || (gap > 0.0 && bound < gap * gap))
             {
@@ -430,7 +497,10 @@ struct GridNeighborsWorker
             break;
           }
         }
-        std::sort(candidates.begin(), candidates.end());
+        if (useHeap || static_cast<int>(candidates.size()) < this->K)
+        {
+          std::sort(candidates.begin(), candidates.end()); // (large k: sorted when trimmed)
+        }
         if (!useHeap && static_cast<int>(candidates.size()) == this->K)
         {
           hint = candidates.back().D2;
