@@ -206,8 +206,9 @@ int main(int argc, char* argv[])
   {
     vtkSMPTools::Initialize(threads);
   }
-  std::printf("SMP backend %s, %d threads; Model I, features 3x denser unless said; median of %d "
-              "runs for VTK's filters\n\n",
+  std::printf("SMP backend %s, %d threads; Model I, features 3x denser unless said; medians of %d "
+              "back-to-back runs of the filter and of VTK's filters, ratios: medians of the "
+              "back-to-back ratios\n\n",
     vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads(), repeat);
 
   bool ok = true;
@@ -217,15 +218,38 @@ int main(int argc, char* argv[])
   for (vtkIdType n : sizes)
   {
     vtkSmartPointer<vtkPolyData> cloud = MakeCloud(n, 3.0);
-    const Run run = RunFilter(cloud, true);
-    const double normals = TimeVTK<vtkPCANormalEstimation>(cloud, repeat);
-    const double curvature = TimeVTK<vtkPCACurvatureEstimation>(cloud, repeat);
+    // The filter and VTK's two filters run back to back `repeat` times; each figure is the median
+    // of its runs and each ratio the median of the back-to-back ratios, so that a change in the
+    // machine's load between runs does not show as a difference. Stages: the median run's.
+    std::vector<Run> runs;
+    std::vector<double> normalTimes, curvatureTimes, normalRatios, curvatureRatios;
+    double peakMiB = 0.0;
+    for (int r = 0; r < repeat; ++r)
+    {
+      runs.push_back(RunFilter(cloud, true));
+      peakMiB = std::max(peakMiB, runs.back().PeakMiB);
+      normalTimes.push_back(TimeVTK<vtkPCANormalEstimation>(cloud, 1));
+      curvatureTimes.push_back(TimeVTK<vtkPCACurvatureEstimation>(cloud, 1));
+      normalRatios.push_back(runs.back().Seconds / normalTimes.back());
+      curvatureRatios.push_back(runs.back().Seconds / curvatureTimes.back());
+    }
+    std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.Seconds < b.Seconds; });
+    Run run = runs[runs.size() / 2];
+    run.PeakMiB = peakMiB;
+    auto median = [](std::vector<double>& v) {
+      std::sort(v.begin(), v.end());
+      return v[v.size() / 2];
+    };
+    const double normals = median(normalTimes);
+    const double curvature = median(curvatureTimes);
+    const double normalRatio = median(normalRatios);
+    const double curvatureRatio = median(curvatureRatios);
     const std::string stages = StageList(run);
     const double perPoint = run.Seconds / n;
     firstPerPoint = firstPerPoint > 0 ? firstPerPoint : perPoint;
     std::printf("%10lld %8.3f %9.2f %9.1f %8.0f %8.2f %9.2f %9lld  %s\n",
       static_cast<long long>(n), run.Seconds, n / run.Seconds / 1e6, run.PeakMiB,
-      run.PeakMiB * 1048576.0 / n, run.Seconds / normals, run.Seconds / curvature,
+      run.PeakMiB * 1048576.0 / n, normalRatio, curvatureRatio,
       static_cast<long long>(run.Candidates), stages.c_str());
     std::printf("%10s vtkPCANormalEstimation %.3f s, vtkPCACurvatureEstimation %.3f s; time per "
                 "point %.2fx the first size's\n",
