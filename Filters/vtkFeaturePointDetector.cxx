@@ -1,4 +1,5 @@
 #include "vtkFeaturePointDetector.h"
+#include "vtkFeaturePointsLocalPCA.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace
 {
@@ -433,29 +435,57 @@ void vtkFeaturePointDetector::BeginStage(const char* name)
 
 void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned char* valid)
 {
-  // Covariance of the whole cloud about its mean, summed in point order.
+  // Covariance of the whole cloud about its mean. The sums run in parallel over fixed blocks of
+  // points and are combined in block order, so they do not depend on the thread count.
+  const vtkIdType n = points->GetNumberOfPoints();
+  constexpr vtkIdType Block = 65536;
+  const vtkIdType nBlocks = (n + Block - 1) / Block;
+  const featurepoints::PointReader reader(points);
+  std::vector<Eigen::Vector3d> blockSum(nBlocks, Eigen::Vector3d::Zero());
+  std::vector<vtkIdType> blockCount(nBlocks, 0);
+  vtkSMPTools::For(0, nBlocks, [&](vtkIdType first, vtkIdType last) {
+    double x[3];
+    for (vtkIdType blk = first; blk < last; ++blk)
+    {
+      for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
+      {
+        if (valid[i])
+        {
+          reader.Get(i, x);
+          blockSum[blk] += Eigen::Vector3d(x[0], x[1], x[2]);
+          ++blockCount[blk];
+        }
+      }
+    }
+  });
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   vtkIdType count = 0;
-  double x[3];
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  for (vtkIdType blk = 0; blk < nBlocks; ++blk)
   {
-    if (valid[i])
-    {
-      points->GetPoint(i, x);
-      mean += Eigen::Vector3d(x[0], x[1], x[2]);
-      ++count;
-    }
+    mean += blockSum[blk];
+    count += blockCount[blk];
   }
   mean /= static_cast<double>(std::max<vtkIdType>(count, 1));
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    if (valid[i])
+  std::vector<Eigen::Matrix3d> blockCov(nBlocks, Eigen::Matrix3d::Zero());
+  vtkSMPTools::For(0, nBlocks, [&](vtkIdType first, vtkIdType last) {
+    double x[3];
+    for (vtkIdType blk = first; blk < last; ++blk)
     {
-      points->GetPoint(i, x);
-      const Eigen::Vector3d v = Eigen::Vector3d(x[0], x[1], x[2]) - mean;
-      cov += v * v.transpose();
+      for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
+      {
+        if (valid[i])
+        {
+          reader.Get(i, x);
+          const Eigen::Vector3d v = Eigen::Vector3d(x[0], x[1], x[2]) - mean;
+          blockCov[blk] += v * v.transpose();
+        }
+      }
     }
+  });
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (vtkIdType blk = 0; blk < nBlocks; ++blk)
+  {
+    cov += blockCov[blk];
   }
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov, Eigen::EigenvaluesOnly);
   const Eigen::Vector3d lambda = solver.eigenvalues(); // ascending

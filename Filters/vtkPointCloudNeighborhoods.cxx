@@ -3,6 +3,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFeaturePointsLocalPCA.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkIdList.h"
@@ -569,13 +570,14 @@ bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)
   }
 
   const vtkIdType n = this->NumberOfPoints;
+  const featurepoints::PointReader reader(points);
   this->Valid.assign(n, 0);
   double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
   double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   double x[3];
   for (vtkIdType i = 0; i < n; ++i)
   {
-    points->GetPoint(i, x);
+    reader.Get(i, x);
     if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
     {
       this->Valid[i] = 1;
@@ -626,7 +628,7 @@ bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)
     {
       if (this->Valid[i])
       {
-        points->GetPoint(i, x);
+        reader.Get(i, x);
         finite->SetPoint(j, x);
         this->LocatorToPoint[j++] = i;
       }
@@ -646,7 +648,7 @@ void vtkPointCloudNeighborhoods::BuildGrid()
   SearchGrid& g = *this->Grid;
   const vtkIdType n = this->NumberOfPoints;
   const vtkIdType m = this->NumberOfValidPoints;
-  vtkPoints* points = this->Points;
+  const featurepoints::PointReader reader(this->Points);
 
   // The box: the bounds, or the central 99 % of the points widened by half its size when a few
   // far outliers stretch the bounds more than four times (they then share the border cells).
@@ -660,7 +662,7 @@ void vtkPointCloudNeighborhoods::BuildGrid()
     {
       if (this->Valid[i] && (seen++ % stride) == 0)
       {
-        points->GetPoint(i, x);
+        reader.Get(i, x);
         for (int a = 0; a < 3; ++a)
         {
           sample[a].push_back(x[a]);
@@ -729,7 +731,7 @@ void vtkPointCloudNeighborhoods::BuildGrid()
     {
       if (this->Valid[i])
       {
-        points->GetPoint(i, x);
+        reader.Get(i, x);
         g.CellOf(x, c);
         cellOf[i] = g.Index(c[0], c[1], c[2]);
       }
@@ -754,7 +756,7 @@ void vtkPointCloudNeighborhoods::BuildGrid()
       const int32_t slot = next[cellOf[i]]++;
       g.SlotOf[i] = slot;
       g.SortedIds[slot] = static_cast<int32_t>(i);
-      points->GetPoint(i, g.SortedPoints.data() + 3 * static_cast<size_t>(slot));
+      reader.Get(i, g.SortedPoints.data() + 3 * static_cast<size_t>(slot));
     }
   }
 }
