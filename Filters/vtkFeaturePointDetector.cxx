@@ -441,52 +441,38 @@ void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned
   constexpr vtkIdType Block = 65536;
   const vtkIdType nBlocks = (n + Block - 1) / Block;
   const featurepoints::PointReader reader(points);
-  std::vector<Eigen::Vector3d> blockSum(nBlocks, Eigen::Vector3d::Zero());
-  std::vector<vtkIdType> blockCount(nBlocks, 0);
-  vtkSMPTools::For(0, nBlocks, [&](vtkIdType first, vtkIdType last) {
-    double x[3];
-    for (vtkIdType blk = first; blk < last; ++blk)
-    {
-      for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
+  auto sumOverValid = [&](auto zero, auto term) {
+    std::vector<decltype(zero)> sums(nBlocks, zero);
+    vtkSMPTools::For(0, nBlocks, [&](vtkIdType first, vtkIdType last) {
+      double x[3];
+      for (vtkIdType blk = first; blk < last; ++blk)
       {
-        if (valid[i])
+        for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
         {
-          reader.Get(i, x);
-          blockSum[blk] += Eigen::Vector3d(x[0], x[1], x[2]);
-          ++blockCount[blk];
+          if (valid[i])
+          {
+            reader.Get(i, x);
+            sums[blk] += term(Eigen::Vector3d(x[0], x[1], x[2]));
+          }
         }
       }
-    }
-  });
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  vtkIdType count = 0;
-  for (vtkIdType blk = 0; blk < nBlocks; ++blk)
-  {
-    mean += blockSum[blk];
-    count += blockCount[blk];
-  }
-  mean /= static_cast<double>(std::max<vtkIdType>(count, 1));
-  std::vector<Eigen::Matrix3d> blockCov(nBlocks, Eigen::Matrix3d::Zero());
-  vtkSMPTools::For(0, nBlocks, [&](vtkIdType first, vtkIdType last) {
-    double x[3];
-    for (vtkIdType blk = first; blk < last; ++blk)
+    });
+    decltype(zero) total = zero;
+    for (const auto& sum : sums)
     {
-      for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
-      {
-        if (valid[i])
-        {
-          reader.Get(i, x);
-          const Eigen::Vector3d v = Eigen::Vector3d(x[0], x[1], x[2]) - mean;
-          blockCov[blk] += v * v.transpose();
-        }
-      }
+      total += sum;
     }
-  });
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (vtkIdType blk = 0; blk < nBlocks; ++blk)
-  {
-    cov += blockCov[blk];
-  }
+    return total;
+  };
+  // (x, y, z, 1): the coordinates' sum and the count.
+  const Eigen::Vector4d sum = sumOverValid(Eigen::Vector4d(Eigen::Vector4d::Zero()),
+    [](const Eigen::Vector3d& p) { return Eigen::Vector4d(p[0], p[1], p[2], 1.0); });
+  const Eigen::Vector3d mean = sum.head<3>() / std::max(sum[3], 1.0);
+  const Eigen::Matrix3d cov = sumOverValid(Eigen::Matrix3d(Eigen::Matrix3d::Zero()),
+    [&mean](const Eigen::Vector3d& p) -> Eigen::Matrix3d {
+      const Eigen::Vector3d v = p - mean;
+      return v * v.transpose();
+    });
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov, Eigen::EigenvaluesOnly);
   const Eigen::Vector3d lambda = solver.eigenvalues(); // ascending
   const double tiny = 1e-12 * lambda[2];
