@@ -240,6 +240,13 @@ struct GridNeighborsWorker
     {
       largest = std::max(largest, c.D2);
     }
+    if (!std::isfinite(largest))
+    {
+      // Squared distances that overflow (coordinates beyond 1e154) have no bucket: plain sort.
+      std::sort(candidates.begin(), candidates.end());
+      candidates.resize(std::min(m, keep));
+      return;
+    }
     const int32_t buckets = static_cast<int32_t>(m);
     // Monotone in D2: a larger distance never lands in an earlier bucket.
     const double scale = largest > 0.0 ? (buckets - 0.5) / largest : 0.0;
