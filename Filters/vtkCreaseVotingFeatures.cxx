@@ -27,6 +27,11 @@ namespace
 constexpr double NoiseFloor = 0.05;
 // Rounds of the two-plane assignment.
 constexpr int MaximumRounds = 8;
+// Rounds of the refit by side of the crease line.
+constexpr int SideRounds = 3;
+// A hinge whose residual exceeds this many times the noise variance per degree of freedom does
+// not describe the neighbourhood.
+constexpr double HingeMisfit = 2.0;
 // Neighbours through which the hysteresis step connects points.
 constexpr int ConnectionNeighbors = 8;
 
@@ -85,15 +90,56 @@ bool FitPlane(const Moments& m, Eigen::Vector3d& centroid, Eigen::Vector3d& norm
   return true;
 }
 
-struct CreaseFit
+// One two-plane model of a neighbourhood: its residual and the line where its planes meet.
+struct CreaseLine
 {
-  double Gain = 0.0;  // RSS_1 - RSS_2, in squared units
   double RSS2 = 0.0;  // residual of the two planes
   float Angle = 0.0f; // degrees
   bool HasLine = false;
-  double LinePoint[3] = { 0.0, 0.0, 0.0 }; // relative to the point
-  double LineDirection[3] = { 0.0, 0.0, 0.0 };
+  float LinePoint[3] = { 0.0f, 0.0f, 0.0f }; // relative to the point
+  float LineDirection[3] = { 0.0f, 0.0f, 0.0f };
 };
+
+struct CreaseFit
+{
+  double RSS1 = 0.0; // residual of one plane
+  CreaseLine Hinge;  // two half-planes, points split by the side of the line they lie on
+  CreaseLine Cross;  // two whole planes, points split by the nearer plane
+};
+
+// The line where the planes (ca, na) and (cb, nb) meet: its point nearest the origin x, its unit
+// direction t and the sine of the planes' angle. False when they are (nearly) parallel.
+bool MeetingLine(const Eigen::Vector3d& ca, const Eigen::Vector3d& na, const Eigen::Vector3d& cb,
+  const Eigen::Vector3d& nb, Eigen::Vector3d& x, Eigen::Vector3d& t, double& sine)
+{
+  t = na.cross(nb);
+  sine = t.norm();
+  if (!(sine > 1e-6))
+  {
+    return false;
+  }
+  t /= sine;
+  // na.x = na.ca, nb.x = nb.cb, t.x = 0.
+  Eigen::Matrix3d a;
+  a.row(0) = na.transpose();
+  a.row(1) = nb.transpose();
+  a.row(2) = t.transpose();
+  x = a.colPivHouseholderQr().solve(Eigen::Vector3d(na.dot(ca), nb.dot(cb), 0.0));
+  return x.allFinite();
+}
+
+void StoreLine(CreaseLine& line, double rss2, double sine, bool hasLine, const Eigen::Vector3d& x,
+  const Eigen::Vector3d& t)
+{
+  line.RSS2 = rss2;
+  line.Angle = static_cast<float>(std::asin(std::min(sine, 1.0)) * 180.0 / 3.14159265358979323846);
+  line.HasLine = hasLine;
+  for (int c = 0; c < 3; ++c)
+  {
+    line.LinePoint[c] = hasLine ? static_cast<float>(x[c]) : 0.0f;
+    line.LineDirection[c] = hasLine ? static_cast<float>(t[c]) : 0.0f;
+  }
+}
 
 // Two-plane fit of one neighbourhood: p[0] is the point (the origin), nr the normals.
 CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& nr,
@@ -171,36 +217,46 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
     side[0] = nextSide[0];
     side[1] = nextSide[1];
   }
+  fit.RSS1 = rss1;
   if (!fitted)
   {
+    fit.Hinge.RSS2 = fit.Cross.RSS2 = rss1;
     return fit;
   }
-  fit.RSS2 = rss2;
-  fit.Gain = std::max(rss1 - rss2, 0.0);
-  Eigen::Vector3d t = na.cross(nb);
-  const double sine = t.norm();
-  fit.Angle = static_cast<float>(std::asin(std::min(sine, 1.0)) * 180.0 / 3.14159265358979323846);
-  if (!(sine > 1e-6))
+  Eigen::Vector3d t, x;
+  double sine = 0.0;
+  bool hasLine = MeetingLine(ca, na, cb, nb, x, t, sine);
+  StoreLine(fit.Cross, rss2, sine, hasLine, x, t);
+  // The nearest-plane assignment fits noise too: each point picks the plane nearer to it, so on a
+  // flat noisy patch two planes "gain" a large share of the residual, and a shallow crease hides
+  // in that. The hinge model is fitted on a partition by position instead: each point goes to the
+  // side of the crease line it lies on, each side gets its plane, and the line is refitted from
+  // these planes, a few rounds. On pure noise it gains what a hinge gains by chance (a few
+  // sigma^2); on a crease of any angle it keeps the whole bend. Where surfaces cross (four
+  // half-planes at the line) it cannot fit, and the caller falls back to the crossing planes.
+  for (int round = 0; hasLine && round < SideRounds; ++round)
   {
-    return fit;
+    // Normal of the plane through the line that separates the two sides' centroids.
+    Eigen::Vector3d across = ca - cb;
+    across -= across.dot(t) * t;
+    if (!(across.squaredNorm() > 0.0))
+    {
+      break;
+    }
+    Moments half[2];
+    for (size_t j = 0; j < m; ++j)
+    {
+      half[(p[j] - x).dot(across) >= 0.0 ? 0 : 1].Add(p[j]);
+    }
+    double qa = 0.0, qb = 0.0;
+    if (!FitPlane(half[0], ca, na, qa) || !FitPlane(half[1], cb, nb, qb))
+    {
+      break;
+    }
+    rss2 = qa + qb;
+    hasLine = MeetingLine(ca, na, cb, nb, x, t, sine);
   }
-  t /= sine;
-  // The point of the line nearest the fitted point: na.x = na.ca, nb.x = nb.cb, t.x = 0.
-  Eigen::Matrix3d a;
-  a.row(0) = na.transpose();
-  a.row(1) = nb.transpose();
-  a.row(2) = t.transpose();
-  const Eigen::Vector3d x = a.colPivHouseholderQr().solve(Eigen::Vector3d(na.dot(ca), nb.dot(cb), 0.0));
-  if (!x.allFinite())
-  {
-    return fit;
-  }
-  fit.HasLine = true;
-  for (int c = 0; c < 3; ++c)
-  {
-    fit.LinePoint[c] = x[c];
-    fit.LineDirection[c] = t[c];
-  }
+  StoreLine(fit.Hinge, rss2, sine, hasLine, x, t);
   return fit;
 }
 
@@ -319,10 +375,12 @@ int vtkCreaseVotingFeatures::RequestData(
   // sigma^2 and the vote's gate, from the whole cloud.
   this->BeginStage("vote");
   std::vector<double> values(static_cast<size_t>(rows));
+  std::vector<double> dof(static_cast<size_t>(rows));
   for (vtkIdType r = 0; r < rows; ++r)
   {
     const int count = featurepoints::RowLength(table.data() + r * k, kf);
-    values[r] = count + 1 > 6 ? fits[r].RSS2 / (count + 1 - 6) : 0.0;
+    dof[r] = count + 1 > 6 ? count + 1 - 6 : 0.0;
+    values[r] = dof[r] > 0.0 ? fits[r].Hinge.RSS2 / dof[r] : 0.0;
   }
   auto median = [](std::vector<double>& v) {
     if (v.empty())
@@ -335,14 +393,21 @@ int vtkCreaseVotingFeatures::RequestData(
   };
   const double variance = std::max(median(values), NoiseFloor * NoiseFloor * d * d);
   this->NoiseSigma = std::sqrt(variance);
+  // Model choice: the hinge, unless it leaves more than HingeMisfit times the noise (surfaces
+  // crossing, corners, strongly curved patches); then the crossing planes, as fitted.
+  std::vector<CreaseLine> lines(static_cast<size_t>(rows));
   float* gain = gains->GetPointer(0);
   float* angle = angles->GetPointer(0);
   for (vtkIdType r = 0; r < rows; ++r)
   {
-    values[r] = fits[r].Gain / variance;
+    const CreaseFit& f = fits[r];
+    const bool misfit = f.Hinge.RSS2 > HingeMisfit * dof[r] * variance;
+    lines[r] = misfit ? f.Cross : f.Hinge;
+    values[r] = std::max(f.RSS1 - lines[r].RSS2, 0.0) / variance;
     gain[ids[r]] = static_cast<float>(values[r]);
-    angle[ids[r]] = fits[r].Angle;
+    angle[ids[r]] = lines[r].Angle;
   }
+  std::vector<double> gainOf(values); // values is reordered by the median
   const double gate = std::max(median(values), 1.0) * variance;
 
   // Step 4: votes.
@@ -354,8 +419,8 @@ int vtkCreaseVotingFeatures::RequestData(
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType r = begin; r < end; ++r)
     {
-      const CreaseFit& f = fits[r];
-      voter[ids[r]] = f.HasLine && f.Gain > gate && !(f.Angle < minAngle) ? 1 : 0;
+      const CreaseLine& f = lines[r];
+      voter[ids[r]] = f.HasLine && gainOf[r] * variance > gate && !(f.Angle < minAngle) ? 1 : 0;
     }
   });
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
@@ -374,7 +439,7 @@ int vtkCreaseVotingFeatures::RequestData(
         {
           continue;
         }
-        const CreaseFit& f = fits[rowOf[other]];
+        const CreaseLine& f = lines[rowOf[other]];
         reader.Get(other, y);
         double v[3];
         for (int c = 0; c < 3; ++c)
@@ -396,7 +461,14 @@ int vtkCreaseVotingFeatures::RequestData(
   // Step 6: hysteresis. Points whose votes exceed GrowThreshold join the feature points they are
   // connected to through such points (each point linked to its ConnectionNeighbors nearest).
   // The result is a set of connected components, so it does not depend on the visiting order.
-  if (this->GrowThreshold < this->ThresholdUsed)
+  // The growth threshold is counted above the cloud's background: the median vote (most points
+  // are not on a crease; on a strongly curved smooth shape every point collects some votes).
+  for (vtkIdType r = 0; r < rows; ++r)
+  {
+    values[r] = vote[ids[r]];
+  }
+  const double growAt = this->GrowThreshold + median(values);
+  if (growAt < this->ThresholdUsed)
   {
     unsigned char* m = mask->GetPointer(0);
     std::vector<vtkIdType> stack;
@@ -416,7 +488,7 @@ int vtkCreaseVotingFeatures::RequestData(
       for (int j = 0; j < kc && row[j] >= 0; ++j)
       {
         const vtkIdType other = row[j];
-        if (!m[other] && vote[other] > this->GrowThreshold)
+        if (!m[other] && vote[other] > growAt)
         {
           m[other] = 1;
           ++this->NumberOfFeaturePoints;

@@ -14,11 +14,18 @@
  * 1. Two-plane fit. The points are split in two by the direction in which their normals (PCA of
  *    the NormalNeighbors nearest, as Eq. 3 of the paper) vary most; then, as in k-means with
  *    planes, each side gets its least-squares plane and every point goes to the nearer plane,
- *    until the split no longer changes (at most 8 rounds).
+ *    until the split no longer changes (at most 8 rounds). These are the "crossing" planes.
+ *    Then the hinge: every point goes to the side of the crossing planes' line it lies on, each
+ *    side gets its plane, and the line is refitted from them (3 rounds). The nearest-plane split
+ *    fits noise (each point picks the plane nearer to it, so on a flat noisy patch two planes
+ *    "gain" a large share of the residual, and a 15-degree crease hides in that); a split by
+ *    position gains only what a hinge gains by chance. Where the hinge leaves more than twice
+ *    the noise variance per degree of freedom (surfaces crossing, corners), the crossing planes
+ *    are kept instead.
  * 2. Crease gain G_i = (RSS_1 - RSS_2) / sigma^2: how much better two planes fit than one (RSS:
  *    sums of squared distances to the planes), in units of the cloud's noise variance sigma^2,
- *    estimated as the median over the cloud of RSS_2 / (N - 6) and never taken below
- *    (0.05 d)^2, d being the mean spacing.
+ *    estimated as the median over the cloud of the hinge's RSS_2 / (N - 6) and never taken
+ *    below (0.05 d)^2, d being the mean spacing.
  * 3. Crease line of the fit: the intersection of the two planes (when they are not parallel).
  * 4. Vote. A point j of P_i's neighbourhood (P_i included) votes for P_i when its gain exceeds
  *    the cloud's median gain (most points of a cloud are not on a crease, so the median gain is
@@ -28,8 +35,10 @@
  * 5. A point is a feature point when a majority of its neighbourhood votes for it: score > 0.5
  *    (ThresholdMode ABSOLUTE, Threshold 0.5 by default).
  * 6. Hysteresis along the features: a point with more than GrowThreshold (0.3) of the votes
- *    joins the feature points it is connected to through such points, which closes the gaps
- *    that noise leaves along shallow creases.
+ *    above the cloud's median vote joins the feature points it is connected to through such
+ *    points, which closes the gaps that noise leaves along shallow creases. The median is the
+ *    background: about 0 on a part, higher on a strongly curved smooth shape, where every point
+ *    collects a few votes.
  *
  * Why this holds up on unseen clouds: near a real crease every neighbour's fit finds the same
  * line, so the points within BandWidth of it collect votes from most of their neighbourhood,
@@ -101,9 +110,10 @@ public:
 
   ///@{
   /**
-   * Hysteresis: a point whose vote fraction exceeds GrowThreshold is a feature point too when it
-   * is connected to a feature point through such points (each point linked to its 8 nearest).
-   * Default 0.3. A value at or above the threshold turns the step off.
+   * Hysteresis: a point whose vote fraction exceeds GrowThreshold plus the cloud's median vote
+   * is a feature point too when it is connected to a feature point through such points (each
+   * point linked to its 8 nearest). Default 0.3. A value at or above the threshold turns the
+   * step off.
    */
   vtkSetClampMacro(GrowThreshold, double, 0.0, 1.0);
   vtkGetMacro(GrowThreshold, double);
