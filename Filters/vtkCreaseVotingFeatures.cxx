@@ -287,6 +287,7 @@ int vtkCreaseVotingFeatures::RequestData(
   }
   this->ResetFigures();
   this->NoiseSigma = 0.0;
+  this->GrowThresholdUsed = this->GrowThreshold;
   const vtkIdType n = input->GetNumberOfPoints();
   vtkPoints* points = input->GetPoints();
   auto normals = featurepoints::NewZeroArray<vtkFloatArray>("Normals", 3, n);
@@ -375,12 +376,12 @@ int vtkCreaseVotingFeatures::RequestData(
   // sigma^2 and the vote's gate, from the whole cloud.
   this->BeginStage("vote");
   std::vector<double> values(static_cast<size_t>(rows));
-  std::vector<double> dof(static_cast<size_t>(rows));
+  auto dof = [&](vtkIdType r) {
+    return std::max(featurepoints::RowLength(table.data() + r * k, kf) + 1 - 6, 0);
+  };
   for (vtkIdType r = 0; r < rows; ++r)
   {
-    const int count = featurepoints::RowLength(table.data() + r * k, kf);
-    dof[r] = count + 1 > 6 ? count + 1 - 6 : 0.0;
-    values[r] = dof[r] > 0.0 ? fits[r].Hinge.RSS2 / dof[r] : 0.0;
+    values[r] = dof(r) > 0 ? fits[r].Hinge.RSS2 / dof(r) : 0.0;
   }
   auto median = [](std::vector<double>& v) {
     if (v.empty())
@@ -394,18 +395,20 @@ int vtkCreaseVotingFeatures::RequestData(
   const double variance = std::max(median(values), NoiseFloor * NoiseFloor * d * d);
   this->NoiseSigma = std::sqrt(variance);
   // Model choice: the hinge, unless it leaves more than HingeMisfit times the noise (surfaces
-  // crossing, corners, strongly curved patches); then the crossing planes, as fitted.
-  std::vector<CreaseLine> lines(static_cast<size_t>(rows));
+  // crossing, corners, strongly curved patches); then the crossing planes, as fitted. The chosen
+  // model replaces the hinge in place: from here on fits[r].Hinge is the fit that votes.
   float* gain = gains->GetPointer(0);
   float* angle = angles->GetPointer(0);
   for (vtkIdType r = 0; r < rows; ++r)
   {
-    const CreaseFit& f = fits[r];
-    const bool misfit = f.Hinge.RSS2 > HingeMisfit * dof[r] * variance;
-    lines[r] = misfit ? f.Cross : f.Hinge;
-    values[r] = std::max(f.RSS1 - lines[r].RSS2, 0.0) / variance;
+    CreaseFit& f = fits[r];
+    if (f.Hinge.RSS2 > HingeMisfit * dof(r) * variance)
+    {
+      f.Hinge = f.Cross;
+    }
+    values[r] = std::max(f.RSS1 - f.Hinge.RSS2, 0.0) / variance;
     gain[ids[r]] = static_cast<float>(values[r]);
-    angle[ids[r]] = lines[r].Angle;
+    angle[ids[r]] = f.Hinge.Angle;
   }
   std::vector<double> gainOf(values); // values is reordered by the median
   const double gate = std::max(median(values), 1.0) * variance;
@@ -419,7 +422,7 @@ int vtkCreaseVotingFeatures::RequestData(
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType r = begin; r < end; ++r)
     {
-      const CreaseLine& f = lines[r];
+      const CreaseLine& f = fits[r].Hinge;
       voter[ids[r]] = f.HasLine && gainOf[r] * variance > gate && !(f.Angle < minAngle) ? 1 : 0;
     }
   });
@@ -439,7 +442,7 @@ int vtkCreaseVotingFeatures::RequestData(
         {
           continue;
         }
-        const CreaseLine& f = lines[rowOf[other]];
+        const CreaseLine& f = fits[rowOf[other]].Hinge;
         reader.Get(other, y);
         double v[3];
         for (int c = 0; c < 3; ++c)
@@ -468,6 +471,7 @@ int vtkCreaseVotingFeatures::RequestData(
     values[r] = vote[ids[r]];
   }
   const double growAt = this->GrowThreshold + median(values);
+  this->GrowThresholdUsed = growAt;
   if (growAt < this->ThresholdUsed)
   {
     unsigned char* m = mask->GetPointer(0);
@@ -510,4 +514,5 @@ void vtkCreaseVotingFeatures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
   os << indent << "BandWidth: " << this->BandWidth << "\n";
   os << indent << "NoiseSigma: " << this->NoiseSigma << "\n";
+  os << indent << "GrowThresholdUsed: " << this->GrowThresholdUsed << "\n";
 }

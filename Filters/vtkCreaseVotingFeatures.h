@@ -119,6 +119,12 @@ public:
   vtkGetMacro(GrowThreshold, double);
   ///@}
 
+  /**
+   * The growth threshold of the last run: GrowThreshold plus the cloud's median vote. The step
+   * ran when this is below GetThresholdUsed().
+   */
+  vtkGetMacro(GrowThresholdUsed, double);
+
   /** sigma of the last run, in the cloud's units (see the class comment). */
   vtkGetMacro(NoiseSigma, double);
 
@@ -137,6 +143,7 @@ protected:
   double GrowThreshold = 0.3;
   double MinimumAngle = 12.0;
   double NoiseSigma = 0.0;
+  double GrowThresholdUsed = 0.0;
 
 private:
   vtkCreaseVotingFeatures(const vtkCreaseVotingFeatures&) = delete;

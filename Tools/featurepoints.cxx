@@ -98,7 +98,7 @@ const std::vector<Method>& Methods()
       "the default: two-plane crease fits and a neighbourhood vote; score CreaseVotes, the "
       "fraction of the neighbourhood whose fitted crease line passes near the point; a feature "
       "point has a majority (> 0.5), then the features grow through points above "
-      "--grow-threshold",
+      "--grow-threshold plus the cloud's median vote",
       [] { return vtkSmartPointer<vtkCreaseVotingFeatures>::New(); },
       [](vtkFeaturePointDetector* f) {
         std::ostringstream s;
@@ -106,9 +106,10 @@ const std::vector<Method>& Methods()
         return s.str();
       },
       [](vtkFeaturePointDetector* f) {
-        // The filter grows the features only when GrowThreshold is below the threshold used.
-        return Crease(f)->GetGrowThreshold() < f->GetThresholdUsed()
-          ? Crease(f)->GetGrowThreshold()
+        // The filter grows the features only when GrowThreshold plus the median vote is below
+        // the threshold used.
+        return Crease(f)->GetGrowThresholdUsed() < f->GetThresholdUsed()
+          ? Crease(f)->GetGrowThresholdUsed()
           : std::nan("");
       } },
     { "huang2023",

@@ -27,8 +27,9 @@ int TestCreaseVotingFeatures(int, char*[])
   using namespace fptest;
   int failures = 0;
 
-  // Quality. Measured when written: 90 degrees P 1.000 R 0.970, 20 degrees P 0.911 R 0.378 (a
-  // shallow crease through noise of half the spacing is this detector's weak case), plane 0.
+  // Quality. Measured with the hinge fits (session 9): 90 degrees P 1.000 R 0.952, 20 degrees
+  // P 0.996 R 0.869, plane 0 (with the nearest-plane fits before it: R 0.970 and P 0.911 R 0.378,
+  // a shallow crease through noise of half the spacing being then the weak case).
   struct Case
   {
     const char* Name;
@@ -36,8 +37,8 @@ int TestCreaseVotingFeatures(int, char*[])
     double MinPrecision, MinRecall;
   };
   Case cases[] = {
-    { "90-degree crease", BentPlanes(30000, 71, 90.0), 0.95, 0.95 },
-    { "20-degree crease", BentPlanes(30000, 72, 20.0), 0.85, 0.30 },
+    { "90-degree crease", BentPlanes(30000, 71, 90.0), 0.97, 0.93 },
+    { "20-degree crease", BentPlanes(30000, 72, 20.0), 0.97, 0.82 },
   };
   for (Case& c : cases)
   {
@@ -60,9 +61,10 @@ int TestCreaseVotingFeatures(int, char*[])
     FP_CHECK(q.Recall >= c.MinRecall, "%s: recall %.3f", c.Name, q.Recall);
     FP_CHECK(filter->GetNumberOfFeaturePoints() == CountSet(Mask(out)), "%s: count", c.Name);
     FP_CHECK(filter->GetThresholdUsed() == 0.5, "%s: threshold %g", c.Name, filter->GetThresholdUsed());
-    // sigma = 0.5 s; the estimate is the median two-plane residual, a little below it.
+    // sigma = 0.5 s; the estimate is the median hinge residual (0.39 d here, d being the noisy
+    // cloud's mean spacing, shorter than s).
     const double ratio = filter->GetNoiseSigma() / filter->GetMeanSpacing();
-    FP_CHECK(ratio > 0.2 && ratio < 0.6, "%s: sigma / d = %.3f", c.Name, ratio);
+    FP_CHECK(ratio > 0.3 && ratio < 0.6, "%s: sigma / d = %.3f", c.Name, ratio);
   }
   {
     Cloud plane = NoisyPlane(30000, 73);
