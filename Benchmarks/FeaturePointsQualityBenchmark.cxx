@@ -3,10 +3,12 @@
 // (vtkFeaturePointExtraction, "Huang2023"), each at its own defaults, no per-cloud tuning:
 // - CAD-like parts (vtkFeatureModelSource: Models I-III, Box, Cylinder, Bracket) with features
 //   sampled 3x denser and uniformly, sigma = 0.5 s: precision, recall, F1 (EVALUATION.md).
-// - Smooth shapes (Sphere, Blob) at sigma = 0, 0.25 s, 0.5 s: false detections per 1000 points.
+// - Smooth shapes (Sphere, Blob) at sigma = 0, 0.25 s, 0.5 s: false detections per 1000 points,
+//   at the scaled point counts and at 7,000 points.
 // - PCEDNet's labelled clouds (coordinates only): MCC per cloud, median per folder and overall.
 // - Invariance: Model I (denser and uniform) scaled by 1000, moved by 10^6 and shuffled: share of
 //   points whose mask changes.
+// - Non-uniform sampling: the parts thinned to a density falling from 1 to 0.2 across x: F1.
 // With --check, every figure is compared with a floor (a little below the figure measured when the
 // floor was set) and the program fails when quality is lost.
 #include "vtkCreaseVotingFeatures.h"
@@ -82,6 +84,34 @@ vtkSmartPointer<vtkPolyData> Model(int model, double scale, double density, doub
   return source->GetOutput();
 }
 
+// Non-uniform sampling: each point kept with a probability falling linearly from 1 at the
+// smallest x to keep at the largest, with its point data (FeatureDistance).
+vtkSmartPointer<vtkPolyData> ThinAlongX(vtkPolyData* cloud, double keep, unsigned seed)
+{
+  double bounds[6];
+  cloud->GetBounds(bounds);
+  const double width = bounds[1] > bounds[0] ? bounds[1] - bounds[0] : 1.0;
+  std::mt19937 random(seed);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  auto thinned = vtkSmartPointer<vtkPolyData>::New();
+  thinned->GetPointData()->CopyAllocate(cloud->GetPointData());
+  for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    cloud->GetPoint(i, x);
+    const double t = (x[0] - bounds[0]) / width;
+    // The generator's raw output, so that the result is the same with every standard library.
+    const double u = static_cast<double>(random()) / 4294967296.0;
+    if (u < 1.0 - (1.0 - keep) * t)
+    {
+      thinned->GetPointData()->CopyData(cloud->GetPointData(), i, points->InsertNextPoint(x));
+    }
+  }
+  thinned->SetPoints(points);
+  return thinned;
+}
+
 vtkDataArray* Mask(vtkFeaturePointDetector* filter, vtkPolyData* input)
 {
   filter->SetInputData(input);
@@ -107,7 +137,8 @@ void Usage(const char* name)
               "  --pcednet DIR  folder searched recursively for PCEDNet's labelled .ply files\n"
               "                 (default: %s)\n"
               "  --check        compare the default detector's figures with their floors; exit 1\n"
-              "                 when one is below (floors are set for --scale 0.3)\n",
+              "                 when one is below (floors are set for --scale 0.3 and, for PCEDNet,\n"
+              "                 the five clouds of Filters/Testing/Data/pcednet, as the CTest runs it)\n",
     name, FEATUREPOINTS_PCEDNET_DIR);
 }
 } // namespace
@@ -204,31 +235,48 @@ int main(int argc, char* argv[])
     std::printf(" %9s |", m.Name);
   }
   std::printf("\n");
-  for (int model : { vtkFeatureModelSource::SPHERE, vtkFeatureModelSource::BLOB })
+  // The same shapes at the models' scaled point counts and at 7,000 points, the smallest size
+  // issue 7 names: there a 60-point neighbourhood spans a fifth of the sphere's radius.
+  // Ceilings: the target (2) where it is met; where it is not (the 7,000-point rows with noise,
+  // README), a regression ceiling a quarter above the figure measured when it was set.
+  const std::map<std::pair<int, double>, double> smallCeilings = {
+    { { vtkFeatureModelSource::SPHERE, 0.5 }, 6.0 },
+    { { vtkFeatureModelSource::BLOB, 0.25 }, 27.0 },
+    { { vtkFeatureModelSource::BLOB, 0.5 }, 33.0 },
+  };
+  for (const bool small : { false, true })
   {
-    for (double noise : { 0.0, 0.25, 0.5 })
+    for (int model : { vtkFeatureModelSource::SPHERE, vtkFeatureModelSource::BLOB })
     {
-      auto cloud = Model(model, scale, 1.0, noise);
-      std::printf("%-10s %-6.2f %7lld |", vtkFeatureModelSource::GetModelName(model), noise,
-        static_cast<long long>(cloud->GetNumberOfPoints()));
-      for (const auto& m : methods)
+      for (double noise : { 0.0, 0.25, 0.5 })
       {
-        auto filter = m.Make();
-        vtkDataArray* mask = Mask(filter, cloud);
-        double detections = 0.0;
-        for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
+        const double fraction = small
+          ? 7000.0 / static_cast<double>(vtkFeatureModelSource::GetDefaultNumberOfPoints(model))
+          : scale;
+        auto cloud = Model(model, fraction, 1.0, noise);
+        std::printf("%-10s %-6.2f %7lld |", vtkFeatureModelSource::GetModelName(model), noise,
+          static_cast<long long>(cloud->GetNumberOfPoints()));
+        for (const auto& m : methods)
         {
-          detections += mask->GetComponent(i, 0) != 0.0;
+          auto filter = m.Make();
+          vtkDataArray* mask = Mask(filter, cloud);
+          double detections = 0.0;
+          for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
+          {
+            detections += mask->GetComponent(i, 0) != 0.0;
+          }
+          const double perThousand = 1000.0 * detections / cloud->GetNumberOfPoints();
+          std::printf(" %9.2f |", perThousand);
+          if (m.Name == methods[0].Name)
+          {
+            const auto ceiling = smallCeilings.find({ model, noise });
+            Ceiling(std::string(vtkFeatureModelSource::GetModelName(model)) + " false per 1000" +
+                (small ? " at 7000 points" : ""),
+              perThousand, small && ceiling != smallCeilings.end() ? ceiling->second : 2.0);
+          }
         }
-        const double perThousand = 1000.0 * detections / cloud->GetNumberOfPoints();
-        std::printf(" %9.2f |", perThousand);
-        if (m.Name == methods[0].Name)
-        {
-          Ceiling(std::string(vtkFeatureModelSource::GetModelName(model)) + " false per 1000",
-            perThousand, 2.0);
-        }
+        std::printf("\n");
       }
-      std::printf("\n");
     }
   }
   std::printf("\n");
@@ -337,6 +385,43 @@ int main(int argc, char* argv[])
         (density > 1.0 ? "denser" : "uniform") + "), %";
       Ceiling(label, share, 0.1);
     }
+  }
+
+  // 5. Non-uniform sampling.
+  std::printf("\n5. Non-uniform sampling: the parts with uniform features, each point kept with a "
+              "probability falling\n   linearly from 1 to 0.2 along x (sigma = 0.5 s of the full "
+              "cloud; s, and the bands, as before thinning): P / R / F1\n");
+  const std::map<int, double> thinFloors = {
+    { vtkFeatureModelSource::MODEL_I, 0.97 },
+    { vtkFeatureModelSource::MODEL_II, 0.91 },
+    { vtkFeatureModelSource::MODEL_III, 0.93 },
+    { vtkFeatureModelSource::BOX, 0.98 },
+    { vtkFeatureModelSource::CYLINDER, 0.93 },
+    { vtkFeatureModelSource::BRACKET, 0.97 },
+  };
+  for (const auto& entry : thinFloors)
+  {
+    auto full = Model(entry.first, scale, 1.0, 0.5);
+    const double s = full->GetFieldData()->GetArray("CleanMeanSpacing")->GetTuple1(0);
+    auto cloud = ThinAlongX(full, 0.2, 11);
+    std::printf("%-10s %7lld of %7lld |", vtkFeatureModelSource::GetModelName(entry.first),
+      static_cast<long long>(cloud->GetNumberOfPoints()),
+      static_cast<long long>(full->GetNumberOfPoints()));
+    for (const auto& m : methods)
+    {
+      auto filter = m.Make();
+      vtkNew<vtkFeaturePointEvaluation> evaluation;
+      evaluation->EvaluateDistances(
+        Mask(filter, cloud), cloud->GetPointData()->GetArray("FeatureDistance"), s);
+      std::printf(" %s %.3f / %.3f / %.3f |", m.Name, evaluation->GetPrecision(),
+        evaluation->GetRecall(), evaluation->GetF1());
+      if (m.Name == methods[0].Name)
+      {
+        Floor(std::string(vtkFeatureModelSource::GetModelName(entry.first)) + " thinned F1",
+          evaluation->GetF1(), entry.second);
+      }
+    }
+    std::printf("\n");
   }
   if (check)
   {
