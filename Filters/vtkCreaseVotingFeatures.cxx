@@ -411,7 +411,7 @@ int vtkCreaseVotingFeatures::RequestData(
     angle[ids[r]] = f.Hinge.Angle;
   }
   std::vector<double> gainOf(values); // values is reordered by the median
-  const double gate = std::max(median(values), 1.0) * variance;
+  const double gate = std::max(median(values), 1.0); // in noise variances, as gainOf
 
   // Step 4: votes.
   const double minAngle = this->MinimumAngle;
@@ -423,7 +423,7 @@ int vtkCreaseVotingFeatures::RequestData(
     for (vtkIdType r = begin; r < end; ++r)
     {
       const CreaseLine& f = fits[r].Hinge;
-      voter[ids[r]] = f.HasLine && gainOf[r] * variance > gate && !(f.Angle < minAngle) ? 1 : 0;
+      voter[ids[r]] = f.HasLine && gainOf[r] > gate && !(f.Angle < minAngle) ? 1 : 0;
     }
   });
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
