@@ -32,6 +32,11 @@ constexpr int SideRounds = 3;
 // A hinge whose residual exceeds this many times the noise variance per degree of freedom does
 // not describe the neighbourhood.
 constexpr double HingeMisfit = 2.0;
+// Two planes of the nearest-plane fit within 10 degrees of parallel and more than 4 times their
+// residual's RMS apart at the fitted point are two sheets (a thin wall), not a crease: a split of
+// pure Gaussian noise puts its planes 2.7 RMS apart.
+const double SheetCosine = std::cos(10.0 * 3.14159265358979323846 / 180.0);
+constexpr double SheetSeparation = 4.0;
 // Neighbours through which the hysteresis step connects points.
 constexpr int ConnectionNeighbors = 8;
 
@@ -105,6 +110,8 @@ struct CreaseFit
   double RSS1 = 0.0; // residual of one plane
   CreaseLine Hinge;  // two half-planes, points split by the side of the line they lie on
   CreaseLine Cross;  // two whole planes, points split by the nearer plane
+  int Points = 0;    // points fitted
+  int Sheet = -1;    // two parallel sheets (a thin wall): the fitted point's sheet (0, 1)
 };
 
 // The line where the planes (ca, na) and (cb, nb) meet: its point nearest the origin x, its unit
@@ -146,6 +153,7 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   std::vector<unsigned char>& label, std::vector<unsigned char>& next)
 {
   CreaseFit fit;
+  fit.Points = static_cast<int>(p.size());
   const size_t m = p.size();
   label.assign(m, 0);
   Eigen::Vector3d c1, n1;
@@ -222,6 +230,18 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   {
     fit.Hinge.RSS2 = fit.Cross.RSS2 = rss1;
     return fit;
+  }
+  // Two parallel sheets a few noise widths apart, the fitted point on one of them: both sides
+  // of a thin wall are in the neighbourhood. The caller fits the point's sheet alone.
+  if (std::abs(na.dot(nb)) > SheetCosine)
+  {
+    const double rms = std::sqrt(rss2 / static_cast<double>(m));
+    // Signed offsets of the fitted point (the origin) from the planes, both normals one way.
+    const double sa = -ca.dot(na), sb = -cb.dot(na.dot(nb) < 0.0 ? -nb : nb);
+    if (std::abs(sa - sb) > SheetSeparation * rms)
+    {
+      fit.Sheet = std::abs(sa) <= std::abs(sb) ? 0 : 1;
+    }
   }
   Eigen::Vector3d t, x;
   double sine = 0.0;
@@ -369,6 +389,25 @@ int vtkCreaseVotingFeatures::RequestData(
         s.N[j + 1] = Eigen::Vector3d(nj[0], nj[1], nj[2]);
       }
       fits[r] = FitCrease(s.P, s.N, s.Label, s.Next);
+      if (fits[r].Sheet >= 0)
+      {
+        // Two parallel sheets (a thin wall): fit the fitted point's sheet alone.
+        const unsigned char sheet = static_cast<unsigned char>(fits[r].Sheet);
+        size_t kept = 0;
+        for (size_t j = 0; j < s.P.size(); ++j)
+        {
+          if (j == 0 || s.Label[j] == sheet)
+          {
+            s.P[kept] = s.P[j];
+            s.N[kept] = s.N[j];
+            ++kept;
+          }
+        }
+        s.P.resize(kept);
+        s.N.resize(kept);
+        fits[r] = FitCrease(s.P, s.N, s.Label, s.Next);
+        fits[r].Sheet = -1;
+      }
     }
   });
   this->UpdateProgress(0.8);
@@ -376,9 +415,7 @@ int vtkCreaseVotingFeatures::RequestData(
   // sigma^2 and the vote's gate, from the whole cloud.
   this->BeginStage("vote");
   std::vector<double> values(static_cast<size_t>(rows));
-  auto dof = [&](vtkIdType r) {
-    return std::max(featurepoints::RowLength(table.data() + r * k, kf) + 1 - 6, 0);
-  };
+  auto dof = [&](vtkIdType r) { return std::max(fits[r].Points - 6, 0); };
   for (vtkIdType r = 0; r < rows; ++r)
   {
     values[r] = dof(r) > 0 ? fits[r].Hinge.RSS2 / dof(r) : 0.0;
