@@ -37,6 +37,10 @@ constexpr double HingeMisfit = 2.0;
 // pure Gaussian noise puts its planes 2.7 RMS apart.
 const double SheetCosine = std::cos(10.0 * 3.14159265358979323846 / 180.0);
 constexpr double SheetSeparation = 4.0;
+// Links of the one-sheet neighbourhoods: each point to its 5 nearest. On a randomly sampled
+// surface these reach about 2.5 mean spacings: walls thicker than about 5 spacings keep their
+// sides apart (4 links split noisy single sheets; 6 join the walls of PCEDNet's abc/7010).
+constexpr int SheetLinks = 5;
 // Neighbours through which the hysteresis step connects points.
 constexpr int ConnectionNeighbors = 8;
 
@@ -280,11 +284,98 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   return fit;
 }
 
+// The neighbours of a point on its own sheet: the neighbourhood's points joined to it through
+// links, a link joining each point to its SheetLinks nearest (either way round). A wall thinner
+// than the neighbourhood but thicker than the links then keeps its two sides apart.
+struct SheetReach
+{
+  std::vector<int32_t> Keys; // open addressing: global id -> local index (0 the point, j + 1 row[j])
+  std::vector<int32_t> Values;
+  std::vector<int32_t> Parent, Size;
+
+  // Marks the reached neighbours in the bit mask `reached` (local indices); returns their count.
+  int Reach(vtkIdType id, const int32_t* row, int count, const int32_t* links, uint64_t* reached)
+  {
+    size_t size = 64;
+    while (size < 2 * static_cast<size_t>(count + 1))
+    {
+      size *= 2;
+    }
+    this->Keys.assign(size, -1);
+    this->Values.resize(size);
+    const size_t mask = size - 1;
+    auto slot = [&](int32_t key) {
+      size_t h = (static_cast<uint32_t>(key) * 2654435761u) & mask;
+      while (this->Keys[h] != -1 && this->Keys[h] != key)
+      {
+        h = (h + 1) & mask;
+      }
+      return h;
+    };
+    this->Parent.resize(static_cast<size_t>(count) + 1);
+    this->Size.assign(static_cast<size_t>(count) + 1, 1);
+    for (int j = 0; j <= count; ++j)
+    {
+      const int32_t key = j == 0 ? static_cast<int32_t>(id) : row[j - 1];
+      const size_t h = slot(key);
+      this->Keys[h] = key;
+      this->Values[h] = j;
+      this->Parent[j] = j;
+    }
+    auto find = [&](int j) {
+      while (this->Parent[j] != j)
+      {
+        this->Parent[j] = this->Parent[this->Parent[j]];
+        j = this->Parent[j];
+      }
+      return j;
+    };
+    for (int j = 0; j <= count; ++j)
+    {
+      const int32_t* linked = links + SheetLinks * static_cast<vtkIdType>(j == 0 ? id : row[j - 1]);
+      for (int e = 0; e < SheetLinks && linked[e] >= 0; ++e)
+      {
+        const size_t h = slot(linked[e]);
+        if (this->Keys[h] == linked[e])
+        {
+          int a = find(j), b = find(this->Values[h]);
+          if (a != b) // union by size: the trees stay shallow
+          {
+            if (this->Size[a] > this->Size[b])
+            {
+              std::swap(a, b);
+            }
+            this->Parent[a] = b;
+            this->Size[b] += this->Size[a];
+          }
+        }
+      }
+    }
+    const int root = find(0);
+    int members = 0;
+    for (int j = 0; j <= count; ++j)
+    {
+      if (find(j) == root)
+      {
+        reached[j / 64] |= uint64_t(1) << (j % 64);
+        ++members;
+      }
+    }
+    return members;
+  }
+};
+
+inline bool Reached(const uint64_t* reached, int j)
+{
+  return (reached[j / 64] >> (j % 64)) & 1u;
+}
+
 struct Scratch
 {
   std::vector<double> Q;
   std::vector<Eigen::Vector3d> P, N;
   std::vector<unsigned char> Label, Next;
+  SheetReach Sheet;
 };
 } // namespace
 
@@ -368,6 +459,18 @@ int vtkCreaseVotingFeatures::RequestData(
   const int kf = this->NumberOfNeighbors;
   std::vector<CreaseFit> fits(static_cast<size_t>(rows));
   vtkSMPThreadLocal<Scratch> scratch;
+  // One bit per neighbour (and the point): on the point's sheet. Every neighbour when the sheet
+  // holds fewer than 8 points (an isolated point), so that the fit has something to work on.
+  const size_t words = (static_cast<size_t>(kf) + 1 + 63) / 64;
+  std::vector<uint64_t> sheets(static_cast<size_t>(rows) * words, 0);
+  // Each point's SheetLinks nearest, by point id, packed.
+  std::vector<int32_t> links(static_cast<size_t>(n) * SheetLinks, -1);
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      std::copy_n(table.data() + r * k, std::min(SheetLinks, k), links.data() + SheetLinks * ids[r]);
+    }
+  });
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
     Scratch& s = scratch.Local();
     s.Q.resize(3 * static_cast<size_t>(kf));
@@ -378,15 +481,24 @@ int vtkCreaseVotingFeatures::RequestData(
       const int32_t* row = table.data() + r * k;
       const int count = featurepoints::RowLength(row, kf);
       featurepoints::GatherRelative(reader, id, row, count, s.Q.data(), x);
-      s.P.resize(static_cast<size_t>(count) + 1);
-      s.N.resize(static_cast<size_t>(count) + 1);
+      uint64_t* sheet = sheets.data() + r * words;
+      if (s.Sheet.Reach(id, row, count, links.data(), sheet) < 8)
+      {
+        std::fill(sheet, sheet + words, ~uint64_t(0));
+      }
+      s.P.resize(1);
+      s.N.resize(1);
       s.P[0].setZero();
       s.N[0] = Eigen::Vector3d(normal[3 * id], normal[3 * id + 1], normal[3 * id + 2]);
       for (int j = 0; j < count; ++j)
       {
-        s.P[j + 1] = Eigen::Vector3d(s.Q[3 * j], s.Q[3 * j + 1], s.Q[3 * j + 2]);
+        if (!Reached(sheet, j + 1))
+        {
+          continue;
+        }
+        s.P.emplace_back(s.Q[3 * j], s.Q[3 * j + 1], s.Q[3 * j + 2]);
         const float* nj = normal + 3 * static_cast<vtkIdType>(row[j]);
-        s.N[j + 1] = Eigen::Vector3d(nj[0], nj[1], nj[2]);
+        s.N.emplace_back(nj[0], nj[1], nj[2]);
       }
       fits[r] = FitCrease(s.P, s.N, s.Label, s.Next);
       if (fits[r].Sheet >= 0)
@@ -472,10 +584,17 @@ int vtkCreaseVotingFeatures::RequestData(
       const int count = featurepoints::RowLength(row, kf);
       reader.Get(id, x);
       int in = 0;
+      // The point's sheet votes, and the fraction is of its members.
+      const uint64_t* sheet = sheets.data() + r * words;
+      int members = 0;
+      for (int j = 0; j <= count; ++j)
+      {
+        members += Reached(sheet, j);
+      }
       for (int j = -1; j < count; ++j)
       {
         const vtkIdType other = j < 0 ? id : static_cast<vtkIdType>(row[j]);
-        if (!voter[other])
+        if (!voter[other] || !Reached(sheet, j + 1))
         {
           continue;
         }
@@ -493,7 +612,7 @@ int vtkCreaseVotingFeatures::RequestData(
           ++in;
         }
       }
-      vote[id] = static_cast<float>(in) / static_cast<float>(count + 1);
+      vote[id] = static_cast<float>(in) / static_cast<float>(members);
     }
   });
   this->ApplyThreshold(vote, ids, nullptr, nullptr, mask->GetPointer(0));

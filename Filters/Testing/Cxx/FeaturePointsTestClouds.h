@@ -132,6 +132,36 @@ inline Cloud BentPlanes(int n, unsigned seed, double bendDegrees, double noiseFa
     });
 }
 
+// A thin bent plate: the 90-degree (or bendDegrees) bend of BentPlanes as a wall of the given
+// thickness, both of its sides sampled (alternate points). Each side has its own crease line,
+// thickness / 2 from the middle surface; delta is the distance to it along the side.
+inline Cloud ThinBentPlate(int n, unsigned seed, double bendDegrees, double thickness)
+{
+  const double t = bendDegrees * M_PI / 180.0;
+  int index = 0;
+  return MakeCloud(n, seed, 0.5,
+    [t, thickness, &index](std::mt19937& rng, double* p, double& delta) {
+      std::uniform_real_distribution<double> u01(0.0, 1.0);
+      const double h = (index++ % 2 ? 0.5 : -0.5) * thickness; // the side's offset
+      const double corner = h * (std::cos(t) - 1.0) / std::sin(t); // its crease, in x
+      const double u = 2.0 * u01(rng) - 1.0;
+      const double y = u01(rng);
+      if (u < 0.0)
+      {
+        p[0] = corner + u;
+        p[1] = y;
+        p[2] = h;
+      }
+      else
+      {
+        p[0] = corner + u * std::cos(t);
+        p[1] = y;
+        p[2] = h + u * std::sin(t);
+      }
+      delta = std::abs(u);
+    });
+}
+
 struct Quality
 {
   double Precision = 0, Recall = 0, F1 = 0;
