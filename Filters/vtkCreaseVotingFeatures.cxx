@@ -294,7 +294,8 @@ struct SheetReach
   std::vector<int32_t> Parent, Size;
 
   // Marks the reached neighbours in the bit mask `reached` (local indices); returns their count.
-  int Reach(vtkIdType id, const int32_t* row, int count, const int32_t* links, uint64_t* reached)
+  int Reach(vtkIdType id, const int32_t* row, int count, const int32_t* table, int k,
+    const std::vector<vtkIdType>& rowOf, uint64_t* reached)
   {
     size_t size = 64;
     while (size < 2 * static_cast<size_t>(count + 1))
@@ -332,7 +333,8 @@ struct SheetReach
     };
     for (int j = 0; j <= count; ++j)
     {
-      const int32_t* linked = links + SheetLinks * static_cast<vtkIdType>(j == 0 ? id : row[j - 1]);
+      // A neighbour's nearest come first in its own row of the table.
+      const int32_t* linked = table + rowOf[j == 0 ? id : row[j - 1]] * k;
       for (int e = 0; e < SheetLinks && linked[e] >= 0; ++e)
       {
         const size_t h = slot(linked[e]);
@@ -463,14 +465,6 @@ int vtkCreaseVotingFeatures::RequestData(
   // holds fewer than 8 points (an isolated point), so that the fit has something to work on.
   const size_t words = (static_cast<size_t>(kf) + 1 + 63) / 64;
   std::vector<uint64_t> sheets(static_cast<size_t>(rows) * words, 0);
-  // Each point's SheetLinks nearest, by point id, packed.
-  std::vector<int32_t> links(static_cast<size_t>(n) * SheetLinks, -1);
-  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      std::copy_n(table.data() + r * k, std::min(SheetLinks, k), links.data() + SheetLinks * ids[r]);
-    }
-  });
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
     Scratch& s = scratch.Local();
     s.Q.resize(3 * static_cast<size_t>(kf));
@@ -482,7 +476,7 @@ int vtkCreaseVotingFeatures::RequestData(
       const int count = featurepoints::RowLength(row, kf);
       featurepoints::GatherRelative(reader, id, row, count, s.Q.data(), x);
       uint64_t* sheet = sheets.data() + r * words;
-      if (s.Sheet.Reach(id, row, count, links.data(), sheet) < 8)
+      if (s.Sheet.Reach(id, row, count, table.data(), k, rowOf, sheet) < 8)
       {
         std::fill(sheet, sheet + words, ~uint64_t(0));
       }
