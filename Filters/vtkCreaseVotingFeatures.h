@@ -11,6 +11,10 @@
  * For each point P_i and its k = NumberOfNeighbors nearest other points (with P_i itself, N = k + 1
  * points):
  *
+ * 0. One sheet. Only the neighbours joined to P_i through links count, each point linked to its
+ *    5 nearest (either way round): both sides of a wall about 5 spacings thick or more are then
+ *    told apart (thin walls, shells, sheet metal). N below is the number of such points; with
+ *    fewer than 8, the whole neighbourhood is used.
  * 1. Two-plane fit. The points are split in two by the direction in which their normals (PCA of
  *    the NormalNeighbors nearest, as Eq. 3 of the paper) vary most; then, as in k-means with
  *    planes, each side gets its least-squares plane and every point goes to the nearer plane,
@@ -21,7 +25,8 @@
  *    "gain" a large share of the residual, and a 15-degree crease hides in that); a split by
  *    position gains only what a hinge gains by chance. Where the hinge leaves more than twice
  *    the noise variance per degree of freedom (surfaces crossing, corners), the crossing planes
- *    are kept instead.
+ *    are kept instead. Where the crossing planes come out parallel and several noise widths
+ *    apart (two sheets the links did not separate), the fit is redone on P_i's sheet.
  * 2. Crease gain G_i = (RSS_1 - RSS_2) / sigma^2: how much better two planes fit than one (RSS:
  *    sums of squared distances to the planes), in units of the cloud's noise variance sigma^2,
  *    estimated as the median over the cloud of the hinge's RSS_2 / (N - 6) and never taken
