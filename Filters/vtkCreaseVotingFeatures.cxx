@@ -498,11 +498,11 @@ int vtkCreaseVotingFeatures::RequestData(
       if (fits[r].Sheet >= 0)
       {
         // Two parallel sheets (a thin wall): fit the fitted point's sheet alone.
-        const unsigned char sheet = static_cast<unsigned char>(fits[r].Sheet);
+        const unsigned char side = static_cast<unsigned char>(fits[r].Sheet);
         size_t kept = 0;
         for (size_t j = 0; j < s.P.size(); ++j)
         {
-          if (j == 0 || s.Label[j] == sheet)
+          if (j == 0 || s.Label[j] == side)
           {
             s.P[kept] = s.P[j];
             s.N[kept] = s.N[j];
