@@ -289,38 +289,23 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
 // than the neighbourhood but thicker than the links then keeps its two sides apart.
 struct SheetReach
 {
-  std::vector<int32_t> Keys; // open addressing: global id -> local index (0 the point, j + 1 row[j])
-  std::vector<int32_t> Values;
+  std::vector<int16_t> LocalOf; // by point id: its local index in the current neighbourhood, or -1
   std::vector<int32_t> Parent, Size;
 
   // Marks the reached neighbours in the bit mask `reached` (local indices); returns their count.
   int Reach(vtkIdType id, const int32_t* row, int count, const int32_t* table, int k,
     const std::vector<vtkIdType>& rowOf, uint64_t* reached)
   {
-    size_t size = 64;
-    while (size < 2 * static_cast<size_t>(count + 1))
+    if (this->LocalOf.size() != rowOf.size())
     {
-      size *= 2;
+      this->LocalOf.assign(rowOf.size(), -1);
     }
-    this->Keys.assign(size, -1);
-    this->Values.resize(size);
-    const size_t mask = size - 1;
-    auto slot = [&](int32_t key) {
-      size_t h = (static_cast<uint32_t>(key) * 2654435761u) & mask;
-      while (this->Keys[h] != -1 && this->Keys[h] != key)
-      {
-        h = (h + 1) & mask;
-      }
-      return h;
-    };
+    auto idOf = [&](int j) { return j == 0 ? id : static_cast<vtkIdType>(row[j - 1]); };
     this->Parent.resize(static_cast<size_t>(count) + 1);
     this->Size.assign(static_cast<size_t>(count) + 1, 1);
     for (int j = 0; j <= count; ++j)
     {
-      const int32_t key = j == 0 ? static_cast<int32_t>(id) : row[j - 1];
-      const size_t h = slot(key);
-      this->Keys[h] = key;
-      this->Values[h] = j;
+      this->LocalOf[idOf(j)] = static_cast<int16_t>(j);
       this->Parent[j] = j;
     }
     auto find = [&](int j) {
@@ -334,13 +319,13 @@ struct SheetReach
     for (int j = 0; j <= count; ++j)
     {
       // A neighbour's nearest come first in its own row of the table.
-      const int32_t* linked = table + rowOf[j == 0 ? id : row[j - 1]] * k;
+      const int32_t* linked = table + rowOf[idOf(j)] * k;
       for (int e = 0; e < SheetLinks && linked[e] >= 0; ++e)
       {
-        const size_t h = slot(linked[e]);
-        if (this->Keys[h] == linked[e])
+        const int other = this->LocalOf[linked[e]];
+        if (other >= 0)
         {
-          int a = find(j), b = find(this->Values[h]);
+          int a = find(j), b = find(other);
           if (a != b) // union by size: the trees stay shallow
           {
             if (this->Size[a] > this->Size[b])
@@ -357,6 +342,7 @@ struct SheetReach
     int members = 0;
     for (int j = 0; j <= count; ++j)
     {
+      this->LocalOf[idOf(j)] = -1;
       if (find(j) == root)
       {
         reached[j / 64] |= uint64_t(1) << (j % 64);
