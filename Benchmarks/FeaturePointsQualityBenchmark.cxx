@@ -9,6 +9,7 @@
 // - Invariance: Model I (denser and uniform) scaled by 1000, moved by 10^6 and shuffled: share of
 //   points whose mask changes.
 // - Non-uniform sampling: the parts thinned to a density falling from 1 to 0.2 across x: F1.
+// - The parts at sigma = 0 and 0.25 s, and at 7,000 points with sigma = 0, 0.25 s, 0.5 s: F1.
 // With --check, every figure is compared with a floor (a little below the figure measured when the
 // floor was set) and the program fails when quality is lost.
 #include "vtkCreaseVotingFeatures.h"
@@ -31,6 +32,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -423,6 +425,71 @@ int main(int argc, char* argv[])
     }
     std::printf("\n");
   }
+  // 6. Other noise levels and the smallest size.
+  std::printf("\n6. Parts at the other noise levels (sigma = 0 and 0.25 s) and at 7,000 points (sigma = 0, "
+              "0.25 s, 0.5 s):\n   precision / recall / F1 (target: F1 >= 0.90 each)\n");
+  std::printf("%-10s %-8s %5s %7s |", "model", "features", "sigma", "points");
+  for (const auto& m : methods)
+  {
+    std::printf(" %-22s|", m.Name);
+  }
+  std::printf("\n");
+  // Floors of the default detector's F1 where the target is missed: a little below the figure
+  // measured when the floor was set; elsewhere the target itself.
+  // Key: model, features denser, sigma, at 7,000 points.
+  const std::map<std::tuple<int, bool, double, bool>, double> sweepFloors = {
+    { { vtkFeatureModelSource::MODEL_II, true, 0.0, true }, 0.80 },
+    { { vtkFeatureModelSource::MODEL_II, true, 0.25, true }, 0.80 },
+    { { vtkFeatureModelSource::MODEL_II, true, 0.5, true }, 0.74 },
+    { { vtkFeatureModelSource::MODEL_II, false, 0.5, true }, 0.75 },
+    { { vtkFeatureModelSource::MODEL_III, false, 0.25, true }, 0.86 },
+  };
+  std::vector<double> sweepF1;
+  for (const bool small : { false, true })
+  {
+    for (const auto& entry : f1Floors)
+    {
+      for (double density : { 3.0, 1.0 })
+      {
+        for (double noise : { 0.0, 0.25, 0.5 })
+        {
+          if (!small && noise == 0.5)
+          {
+            continue; // section 1
+          }
+          const double fraction = small
+            ? 7000.0 / static_cast<double>(vtkFeatureModelSource::GetDefaultNumberOfPoints(entry.first))
+            : scale;
+          auto cloud = Model(entry.first, fraction, density, noise);
+          const double s = cloud->GetFieldData()->GetArray("CleanMeanSpacing")->GetTuple1(0);
+          std::printf("%-10s %-8s %5.2f %7lld |", vtkFeatureModelSource::GetModelName(entry.first),
+            density > 1.0 ? "denser" : "uniform", noise,
+            static_cast<long long>(cloud->GetNumberOfPoints()));
+          for (const auto& m : methods)
+          {
+            auto filter = m.Make();
+            vtkNew<vtkFeaturePointEvaluation> evaluation;
+            evaluation->EvaluateDistances(
+              Mask(filter, cloud), cloud->GetPointData()->GetArray("FeatureDistance"), s);
+            std::printf(" %.3f / %.3f / %.3f |", evaluation->GetPrecision(),
+              evaluation->GetRecall(), evaluation->GetF1());
+            if (m.Name == methods[0].Name)
+            {
+              sweepF1.push_back(evaluation->GetF1());
+              const auto floor = sweepFloors.find({ entry.first, density > 1.0, noise, small });
+              Floor(std::string(vtkFeatureModelSource::GetModelName(entry.first)) +
+                  (density > 1.0 ? " denser" : " uniform") + " sigma " + std::to_string(noise).substr(0, 4) +
+                  (small ? " at 7000 points" : "") + " F1",
+                evaluation->GetF1(), floor != sweepFloors.end() ? floor->second : 0.90);
+            }
+          }
+          std::printf("\n");
+        }
+      }
+    }
+  }
+  std::printf("Crease: lowest F1 %.3f, median %.3f\n",
+    *std::min_element(sweepF1.begin(), sweepF1.end()), Median(sweepF1));
   if (check)
   {
     std::printf("\n%s: %d figure(s) below their floor\n", failures ? "FAILED" : "passed", failures);
