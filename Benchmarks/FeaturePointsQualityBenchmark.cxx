@@ -121,6 +121,19 @@ vtkDataArray* Mask(vtkFeaturePointDetector* filter, vtkPolyData* input)
   return filter->GetOutput()->GetPointData()->GetArray("FeatureMask");
 }
 
+// Runs one method on a synthetic cloud, prints " P / R / F1 |" (after the method's name when
+// `named`) and returns F1; s is the clean mean spacing of EVALUATION.md's bands.
+double PrintScores(const Method& method, vtkPolyData* cloud, double s, bool named)
+{
+  auto filter = method.Make();
+  vtkNew<vtkFeaturePointEvaluation> evaluation;
+  evaluation->EvaluateDistances(
+    Mask(filter, cloud), cloud->GetPointData()->GetArray("FeatureDistance"), s);
+  std::printf(" %s%s%.3f / %.3f / %.3f |", named ? method.Name : "", named ? " " : "",
+    evaluation->GetPrecision(), evaluation->GetRecall(), evaluation->GetF1());
+  return evaluation->GetF1();
+}
+
 double Median(std::vector<double> v)
 {
   if (v.empty())
@@ -209,18 +222,13 @@ int main(int argc, char* argv[])
         density > 1.0 ? "denser" : "uniform", static_cast<long long>(cloud->GetNumberOfPoints()));
       for (const auto& m : methods)
       {
-        auto filter = m.Make();
-        vtkNew<vtkFeaturePointEvaluation> evaluation;
-        evaluation->EvaluateDistances(
-          Mask(filter, cloud), cloud->GetPointData()->GetArray("FeatureDistance"), s);
-        std::printf(" %.3f / %.3f / %.3f |", evaluation->GetPrecision(), evaluation->GetRecall(),
-          evaluation->GetF1());
+        const double f1 = PrintScores(m, cloud, s, false);
         if (m.Name == methods[0].Name)
         {
-          partF1.push_back(evaluation->GetF1());
+          partF1.push_back(f1);
           Floor(std::string(vtkFeatureModelSource::GetModelName(entry.first)) +
               (density > 1.0 ? " denser F1" : " uniform F1"),
-            evaluation->GetF1(), density > 1.0 ? entry.second.first : entry.second.second);
+            f1, density > 1.0 ? entry.second.first : entry.second.second);
         }
       }
       std::printf("\n");
@@ -411,16 +419,11 @@ int main(int argc, char* argv[])
       static_cast<long long>(full->GetNumberOfPoints()));
     for (const auto& m : methods)
     {
-      auto filter = m.Make();
-      vtkNew<vtkFeaturePointEvaluation> evaluation;
-      evaluation->EvaluateDistances(
-        Mask(filter, cloud), cloud->GetPointData()->GetArray("FeatureDistance"), s);
-      std::printf(" %s %.3f / %.3f / %.3f |", m.Name, evaluation->GetPrecision(),
-        evaluation->GetRecall(), evaluation->GetF1());
+      const double f1 = PrintScores(m, cloud, s, true);
       if (m.Name == methods[0].Name)
       {
-        Floor(std::string(vtkFeatureModelSource::GetModelName(entry.first)) + " thinned F1",
-          evaluation->GetF1(), entry.second);
+        Floor(std::string(vtkFeatureModelSource::GetModelName(entry.first)) + " thinned F1", f1,
+          entry.second);
       }
     }
     std::printf("\n");
@@ -457,9 +460,9 @@ int main(int argc, char* argv[])
           {
             continue; // section 1
           }
-          const double fraction = small
-            ? 7000.0 / static_cast<double>(vtkFeatureModelSource::GetDefaultNumberOfPoints(entry.first))
-            : scale;
+          const double defaultCount =
+            static_cast<double>(vtkFeatureModelSource::GetDefaultNumberOfPoints(entry.first));
+          const double fraction = small ? 7000.0 / defaultCount : scale;
           auto cloud = Model(entry.first, fraction, density, noise);
           const double s = cloud->GetFieldData()->GetArray("CleanMeanSpacing")->GetTuple1(0);
           std::printf("%-10s %-8s %5.2f %7lld |", vtkFeatureModelSource::GetModelName(entry.first),
@@ -467,20 +470,15 @@ int main(int argc, char* argv[])
             static_cast<long long>(cloud->GetNumberOfPoints()));
           for (const auto& m : methods)
           {
-            auto filter = m.Make();
-            vtkNew<vtkFeaturePointEvaluation> evaluation;
-            evaluation->EvaluateDistances(
-              Mask(filter, cloud), cloud->GetPointData()->GetArray("FeatureDistance"), s);
-            std::printf(" %.3f / %.3f / %.3f |", evaluation->GetPrecision(),
-              evaluation->GetRecall(), evaluation->GetF1());
+            const double f1 = PrintScores(m, cloud, s, false);
             if (m.Name == methods[0].Name)
             {
-              sweepF1.push_back(evaluation->GetF1());
+              sweepF1.push_back(f1);
               const auto floor = sweepFloors.find({ entry.first, density > 1.0, noise, small });
               Floor(std::string(vtkFeatureModelSource::GetModelName(entry.first)) +
-                  (density > 1.0 ? " denser" : " uniform") + " sigma " + std::to_string(noise).substr(0, 4) +
-                  (small ? " at 7000 points" : "") + " F1",
-                evaluation->GetF1(), floor != sweepFloors.end() ? floor->second : 0.90);
+                  (density > 1.0 ? " denser" : " uniform") + " sigma " +
+                  std::to_string(noise).substr(0, 4) + (small ? " at 7000 points" : "") + " F1",
+                f1, floor != sweepFloors.end() ? floor->second : 0.90);
             }
           }
           std::printf("\n");
