@@ -41,6 +41,12 @@ constexpr double SheetSeparation = 4.0;
 // surface these reach about 2.5 mean spacings: walls thicker than about 5 spacings keep their
 // sides apart (4 links split noisy single sheets; 6 join the walls of PCEDNet's abc/7010).
 constexpr int SheetLinks = 5;
+// A fit votes only where its hinge explains more than this many noise variances beyond one plane.
+// The gate used to be the cloud's median gain, taken as what a fit gains by chance; with 150
+// neighbours the angle and the line decide, and gates of 1 to 25 give the same masks. The median
+// failed where most points lie within a neighbourhood of a crease (features sampled denser, small
+// clouds): it was then a crease's gain, and the shallow creases fell below it.
+constexpr double MinimumGain = 1.0;
 // Neighbours through which the hysteresis step connects points.
 constexpr int ConnectionNeighbors = 8;
 
@@ -504,7 +510,7 @@ int vtkCreaseVotingFeatures::RequestData(
   });
   this->UpdateProgress(0.8);
 
-  // sigma^2 and the vote's gate, from the whole cloud.
+  // sigma^2, from the whole cloud.
   this->BeginStage("vote");
   std::vector<double> values(static_cast<size_t>(rows));
   auto dof = [&](vtkIdType r) { return std::max(fits[r].Points - 6, 0); };
@@ -539,8 +545,6 @@ int vtkCreaseVotingFeatures::RequestData(
     gain[ids[r]] = static_cast<float>(values[r]);
     angle[ids[r]] = f.Hinge.Angle;
   }
-  std::vector<double> gainOf(values); // values is reordered by the median
-  const double gate = std::max(median(values), 1.0); // in noise variances, as gainOf
 
   // Step 4: votes.
   const double minAngle = this->MinimumAngle;
@@ -552,7 +556,7 @@ int vtkCreaseVotingFeatures::RequestData(
     for (vtkIdType r = begin; r < end; ++r)
     {
       const CreaseLine& f = fits[r].Hinge;
-      voter[ids[r]] = f.HasLine && gainOf[r] > gate && !(f.Angle < minAngle) ? 1 : 0;
+      voter[ids[r]] = f.HasLine && values[r] > MinimumGain && !(f.Angle < minAngle) ? 1 : 0;
     }
   });
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {

@@ -32,11 +32,10 @@
  *    estimated as the median over the cloud of the hinge's RSS_2 / (N - 6) and never taken
  *    below (0.05 d)^2, d being the mean spacing.
  * 3. Crease line of the fit: the intersection of the two planes (when they are not parallel).
- * 4. Vote. A point j of P_i's neighbourhood (P_i included) votes for P_i when its gain exceeds
- *    the cloud's median gain (most points of a cloud are not on a crease, so the median gain is
- *    what a two-plane fit gains on a smooth patch by chance; and never less than 1) and its
- *    crease line passes within BandWidth d of P_i, and its planes meet at MinimumAngle or more.
- *    The score `CreaseVotes` is the fraction of the N points that vote.
+ * 4. Vote. A point j of P_i's neighbourhood (P_i included) votes for P_i when its two planes
+ *    fit better than one (gain above 1), meet at MinimumAngle or more, and its crease line
+ *    passes within BandWidth d of P_i. The score `CreaseVotes` is the fraction of the N points
+ *    that vote.
  * 5. A point is a feature point when a majority of its neighbourhood votes for it: score > 0.5
  *    (ThresholdMode ABSOLUTE, Threshold 0.5 by default).
  * 6. Hysteresis along the features: a point with more than GrowThreshold (0.3) of the votes
@@ -78,9 +77,13 @@ public:
 
   ///@{
   /**
-   * k: the nearest other points of each two-plane fit and each vote. Default 60 (on a randomly
-   * sampled surface, a disc of about 9 d: wide enough to see a 15-degree crease through noise of
-   * half the spacing).
+   * k: the nearest other points of each two-plane fit and each vote. Default 150 (on a randomly
+   * sampled surface, a disc of about 14 d radius). The wide vote is what tells a curved face
+   * from a crease: a point's nearest neighbours always see a line near it, a majority of 150
+   * only where the line runs on for the neighbourhood's width; and the wide fit reads a
+   * 15-degree crease's angle and line through noise of half the spacing. Smaller values (60)
+   * keep features closer together than the neighbourhood apart (small, detailed CAD parts such
+   * as PCEDNet's ABC models) at the price of more false points on curved faces.
    */
   vtkSetClampMacro(NumberOfNeighbors, int, 8, 1000);
   vtkGetMacro(NumberOfNeighbors, int);
@@ -142,7 +145,7 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int NumberOfNeighbors = 60;
+  int NumberOfNeighbors = 150;
   int NormalNeighbors = 15;
   double BandWidth = 2.0;
   double GrowThreshold = 0.3;

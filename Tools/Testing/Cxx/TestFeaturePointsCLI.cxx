@@ -255,7 +255,7 @@ int main(int argc, char* argv[])
            "--center-k", "--ssi-center", "--gaussian-radius", "--voxel-filter", "--voxel-size",
            "--density-contrast", "--voxel-rule", "--threshold", "--threshold-sigmas", "--k",
            "--crease-k", "--band-width", "--min-angle", "--grow-threshold", "crease", "huang2023",
-           "ssi", "pca", "wang-yuan", "[0.75", "[15, 3 to 1000]", "[60, 8 to 1000]",
+           "ssi", "pca", "wang-yuan", "[0.75", "[15, 3 to 1000]", "[150, 8 to 1000]",
            "[automatic; crease: 0.5]", "(default: --method crease)", "--method NAME         "
            "the method (default crease)" })
     {
