@@ -43,7 +43,8 @@ constexpr double SheetSeparation = 4.0;
 constexpr int SheetLinks = 5;
 // A fit votes only where its hinge explains more than this many noise variances beyond one plane.
 // The gate used to be the cloud's median gain, taken as what a fit gains by chance; with 150
-// neighbours the angle and the line decide, and gates of 1 to 25 give the same masks. The median
+// neighbours (the default) the angle and the line decide: gates of 1, 4, 10 and 25 give the same
+// F1 within 0.003 on every part and smooth shape of the quality probes. The median
 // failed where most points lie within a neighbourhood of a crease (features sampled denser, small
 // clouds): it was then a crease's gain, and the shallow creases fell below it.
 constexpr double MinimumGain = 1.0;
