@@ -153,14 +153,18 @@ struct Patch
   enum Kind
   {
     Parallelogram, // Origin + a U + b V, a, b in [0, 1]
-    Cylinder,      // axis along z through Origin, radius R, z in [Origin.Z + Z0, Origin.Z + Z1]
+    Cylinder,      // axis along z through Origin, radius R, z in [Origin.Z + Z0, Origin.Z + Z1],
+                   // azimuth in [0, Angle]
     Sphere,        // centre Origin, radius R
     Triangle,      // Origin + a U + b V, a, b >= 0, a + b <= 1
     Disk,          // in the plane z = Origin.Z, centre Origin, radius R
     Blob,          // centre Origin, radius R (1 + BlobAmplitude BlobShape(u)) in direction u
+    Perforated,    // the Parallelogram less the disk of radius R around its centre (U, V
+                   // orthogonal, the disk inside)
   } Type;
   Vec Origin, U, V;
   double R = 0, Z0 = 0, Z1 = 0;
+  double Angle = 2.0 * Pi; // the Cylinder's range of azimuths
 
   double Area() const
   {
@@ -169,13 +173,15 @@ struct Patch
       case Parallelogram:
         return Norm(Cross(this->U, this->V));
       case Cylinder:
-        return 2.0 * Pi * this->R * (this->Z1 - this->Z0);
+        return this->Angle * this->R * (this->Z1 - this->Z0);
       case Triangle:
         return 0.5 * Norm(Cross(this->U, this->V));
       case Disk:
         return Pi * this->R * this->R;
       case Blob:
         return BlobArea(this->R);
+      case Perforated:
+        return Norm(Cross(this->U, this->V)) - Pi * this->R * this->R;
       default:
         return 4.0 * Pi * this->R * this->R;
     }
@@ -193,7 +199,7 @@ struct Patch
       }
       case Cylinder:
       {
-        const double t = 2.0 * Pi * rng.Uniform();
+        const double t = this->Angle * rng.Uniform();
         const double z = this->Z0 + (this->Z1 - this->Z0) * rng.Uniform();
         return this->Origin + Vec{ this->R * std::cos(t), this->R * std::sin(t), z };
       }
@@ -214,6 +220,21 @@ struct Patch
         const double r = this->R * std::sqrt(rng.Uniform());
         const double t = 2.0 * Pi * rng.Uniform();
         return this->Origin + Vec{ r * std::cos(t), r * std::sin(t), 0.0 };
+      }
+      case Perforated:
+      {
+        // Uniform over the parallelogram, drawn again inside the hole.
+        const Vec centre = this->Origin + 0.5 * (this->U + this->V);
+        for (;;)
+        {
+          const double a = rng.Uniform();
+          const double b = rng.Uniform();
+          const Vec p = this->Origin + a * this->U + b * this->V;
+          if (Norm(p - centre) >= this->R)
+          {
+            return p;
+          }
+        }
       }
       case Blob:
       {
@@ -246,12 +267,14 @@ struct Patch
   }
 };
 
-// A feature curve: a segment A-B, or a circle of radius R around a z axis through A.
+// A feature curve of a FeatureType: a segment A-B, or a circle of radius R around a z axis
+// through A.
 struct Curve
 {
   bool Circle = false;
   Vec A, B;
   double R = 0;
+  unsigned char Type = vtkFeatureModelSource::CONVEX_CREASE;
 
   double Distance(const Vec& p) const
   {
@@ -267,24 +290,68 @@ struct Curve
   }
 };
 
+Curve Segment(const Vec& a, const Vec& b, unsigned char type)
+{
+  return { false, a, b, 0.0, type };
+}
+Curve Circle(const Vec& centre, double r, unsigned char type)
+{
+  return { true, centre, Vec{}, r, type };
+}
+
 struct Geometry
 {
   std::vector<Patch> Patches;
   std::vector<Curve> Curves;
+  std::vector<Vec> Corners; // where three creases, or two borders at an angle, meet
 
-  double Distance(const Vec& p) const
+  // The distance from p to the nearest feature curve, and that curve's type.
+  double Distance(const Vec& p, unsigned char& type) const
   {
     double best = VTK_FLOAT_MAX;
+    type = vtkFeatureModelSource::NOT_FEATURE;
     for (const Curve& c : this->Curves)
     {
-      best = std::min(best, c.Distance(p));
+      const double d = c.Distance(p);
+      if (d < best)
+      {
+        best = d;
+        type = c.Type;
+      }
     }
     return best;
   }
+
+  // The FeatureType of a positive point p whose nearest curve is of the type `nearest`.
+  unsigned char PositiveType(const Vec& p, unsigned char nearest, double radius) const
+  {
+    for (const Vec& c : this->Corners)
+    {
+      if (Norm(p - c) <= radius)
+      {
+        return vtkFeatureModelSource::CORNER;
+      }
+    }
+    return nearest;
+  }
+
+  // The area of the patches 0 to k, for each k.
+  std::vector<double> CumulativeAreas() const
+  {
+    std::vector<double> cumulative;
+    double area = 0.0;
+    for (const Patch& p : this->Patches)
+    {
+      area += p.Area();
+      cumulative.push_back(area);
+    }
+    return cumulative;
+  }
 };
 
-// A profile z(x) (polyline through (x_k, z_k)) swept along y over [-w/2, w/2]; its inner
-// vertices are the creases.
+// A profile z(x) (polyline through (x_k, z_k), x never decreasing) swept along y over
+// [-w/2, w/2], the outside towards +z; its inner vertices are the creases, convex where the
+// profile turns clockwise.
 Geometry Extrusion(const std::vector<double>& x, const std::vector<double>& z, double w)
 {
   Geometry g;
@@ -295,12 +362,70 @@ Geometry Extrusion(const std::vector<double>& x, const std::vector<double>& z, d
   }
   for (size_t k = 1; k + 1 < x.size(); ++k)
   {
-    g.Curves.push_back({ false, Vec{ x[k], -0.5 * w, z[k] }, Vec{ x[k], 0.5 * w, z[k] }, 0.0 });
+    const double turn =
+      (x[k] - x[k - 1]) * (z[k + 1] - z[k]) - (z[k] - z[k - 1]) * (x[k + 1] - x[k]);
+    g.Curves.push_back(Segment(Vec{ x[k], -0.5 * w, z[k] }, Vec{ x[k], 0.5 * w, z[k] },
+      turn < 0.0 ? vtkFeatureModelSource::CONVEX_CREASE : vtkFeatureModelSource::CONCAVE_CREASE));
   }
   return g;
 }
 
-Geometry MakeGeometry(int model, double size, double valleySlope)
+// A closed box of edges ex, ey, ez along x, y, z, centred on the origin: six faces, twelve convex
+// edges, eight corners.
+Geometry Box(double ex, double ey, double ez)
+{
+  Geometry g;
+  const Vec e[3] = { { ex, 0, 0 }, { 0, ey, 0 }, { 0, 0, ez } };
+  const Vec corner = -0.5 * (e[0] + e[1] + e[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec& a = e[(k + 1) % 3];
+    const Vec& b = e[(k + 2) % 3];
+    // The two faces normal to axis k, and the four edges along it.
+    g.Patches.push_back({ Patch::Parallelogram, corner, a, b });
+    g.Patches.push_back({ Patch::Parallelogram, corner + e[k], a, b });
+    for (int m = 0; m < 4; ++m)
+    {
+      const Vec start = corner + static_cast<double>(m & 1) * a + static_cast<double>(m >> 1) * b;
+      g.Curves.push_back(Segment(start, start + e[k], vtkFeatureModelSource::CONVEX_CREASE));
+    }
+  }
+  for (int m = 0; m < 8; ++m)
+  {
+    g.Corners.push_back(corner + static_cast<double>(m & 1) * e[0] +
+      static_cast<double>((m >> 1) & 1) * e[1] + static_cast<double>(m >> 2) * e[2]);
+  }
+  return g;
+}
+
+// PARALLEL_CREASES: RibCount ribs as wide and high as their pitch, a pitch apart, within the
+// middle RibSpan of the sheet.
+constexpr int RibCount = 3;
+constexpr double RibSpan = 0.8; // in Size
+double MaxRibPitch(double size)
+{
+  return RibSpan * size / (2 * RibCount - 1);
+}
+
+// The profile of the ribs with the pitch d, centred on x = 0.
+Geometry Ribs(double size, double d)
+{
+  const double h = 0.5 * size;
+  std::vector<double> x{ -h }, z{ 0.0 };
+  for (int k = 0; k < RibCount; ++k)
+  {
+    const double left = (2 * k - 0.5 * (2 * RibCount - 1)) * d;
+    x.insert(x.end(), { left, left, left + d, left + d });
+    z.insert(z.end(), { 0.0, d, d, 0.0 });
+  }
+  x.push_back(h);
+  z.push_back(0.0);
+  return Extrusion(x, z, size);
+}
+
+// The model's surface patches, feature curves and corners; `separation` is the length of
+// FeatureSeparation nominal spacings, for PARALLEL_CREASES and THIN_PLATE.
+Geometry MakeGeometry(int model, double size, double valleySlope, double separation)
 {
   const double h = 0.5 * size;
   switch (model)
@@ -332,29 +457,17 @@ Geometry MakeGeometry(int model, double size, double valleySlope)
       cylinder.Z0 = -r;
       cylinder.Z1 = r;
       g.Patches.push_back(cylinder);
-      g.Curves.push_back({ true, Vec{}, Vec{}, r });
+      // Two of the four angles around the circle are convex, two concave: called convex.
+      g.Curves.push_back(Circle(Vec{}, r, vtkFeatureModelSource::CONVEX_CREASE));
       return g;
     }
     case vtkFeatureModelSource::BOX:
-    {
-      Geometry g;
-      const Vec e[3] = { { 1.0 * size, 0, 0 }, { 0, 0.7 * size, 0 }, { 0, 0, 0.5 * size } };
-      const Vec corner = -0.5 * (e[0] + e[1] + e[2]);
-      for (int k = 0; k < 3; ++k)
-      {
-        const Vec& a = e[(k + 1) % 3];
-        const Vec& b = e[(k + 2) % 3];
-        // The two faces normal to axis k, and the four edges along it.
-        g.Patches.push_back({ Patch::Parallelogram, corner, a, b });
-        g.Patches.push_back({ Patch::Parallelogram, corner + e[k], a, b });
-        for (int m = 0; m < 4; ++m)
-        {
-          const Vec start = corner + static_cast<double>(m & 1) * a + static_cast<double>(m >> 1) * b;
-          g.Curves.push_back({ false, start, start + e[k], 0.0 });
-        }
-      }
-      return g;
-    }
+      return Box(1.0 * size, 0.7 * size, 0.5 * size);
+    case vtkFeatureModelSource::THIN_PLATE:
+      return Box(1.0 * size, 0.6 * size, separation);
+    case vtkFeatureModelSource::PARALLEL_CREASES:
+      // Capped so that the ribs stay on the sheet; RequestData warns.
+      return Ribs(size, std::min(separation, MaxRibPitch(size)));
     case vtkFeatureModelSource::CYLINDER:
     {
       Geometry g;
@@ -369,7 +482,7 @@ Geometry MakeGeometry(int model, double size, double valleySlope)
         Patch cap{ Patch::Disk, Vec{ 0.0, 0.0, c }, Vec{}, Vec{} };
         cap.R = r;
         g.Patches.push_back(cap);
-        g.Curves.push_back({ true, Vec{ 0.0, 0.0, c }, Vec{}, r });
+        g.Curves.push_back(Circle(Vec{ 0.0, 0.0, c }, r, vtkFeatureModelSource::CONVEX_CREASE));
       }
       return g;
     }
@@ -386,14 +499,21 @@ Geometry MakeGeometry(int model, double size, double valleySlope)
       Geometry g;
       for (int k = 0; k < 7; ++k)
       {
-        const int l = (k + 1) % 7;
+        const int l = (k + 1) % 7, j = (k + 6) % 7;
         const Vec a{ x[k], -0.5 * w, z[k] };
         const Vec b{ x[l], -0.5 * w, z[l] };
         const Vec y{ 0.0, w, 0.0 };
+        // The profile runs counter-clockwise: convex where it turns counter-clockwise.
+        const double turn = (x[k] - x[j]) * (z[l] - z[k]) - (z[k] - z[j]) * (x[l] - x[k]);
         g.Patches.push_back({ Patch::Parallelogram, a, b - a, y });
-        g.Curves.push_back({ false, a, a + y, 0.0 }); // the edge along y at the profile's vertex k
-        g.Curves.push_back({ false, a, b, 0.0 });     // the end caps' edges
-        g.Curves.push_back({ false, a + y, b + y, 0.0 });
+        // The edge along y at the profile's vertex k, and the end caps' edges.
+        const unsigned char along = turn > 0.0 ? vtkFeatureModelSource::CONVEX_CREASE
+                                               : vtkFeatureModelSource::CONCAVE_CREASE;
+        g.Curves.push_back(Segment(a, a + y, along));
+        g.Curves.push_back(Segment(a, b, vtkFeatureModelSource::CONVEX_CREASE));
+        g.Curves.push_back(Segment(a + y, b + y, vtkFeatureModelSource::CONVEX_CREASE));
+        g.Corners.push_back(a);
+        g.Corners.push_back(a + y);
       }
       // The end caps: the upright's rectangle, the long leg's rectangles under the free end's
       // top and under the flat top, and the triangle under the sloped top.
@@ -407,6 +527,51 @@ Geometry MakeGeometry(int model, double size, double valleySlope)
           Vec{ 0, 0, z[3] - z[2] } });
         g.Patches.push_back({ Patch::Triangle, Vec{ x[3], y, z[2] }, Vec{ x[2] - x[3], 0, 0 },
           Vec{ 0, 0, z[3] - z[2] } });
+      }
+      return g;
+    }
+    case vtkFeatureModelSource::HALF_CYLINDER:
+    {
+      // Azimuths 0 to pi (y >= 0) of the cylinder, z from -h to h: its borders are the half
+      // circles at both ends and the straight lines at azimuths 0 and pi. The half circles are
+      // given as whole circles: from any point of the surface, the nearest point of the circle
+      // lies at the point's own azimuth, on the half circle.
+      Geometry g;
+      const double r = 0.3 * size;
+      Patch side{ Patch::Cylinder, Vec{}, Vec{}, Vec{} };
+      side.R = r;
+      side.Z0 = -h;
+      side.Z1 = h;
+      side.Angle = Pi;
+      g.Patches.push_back(side);
+      for (const double z : { -h, h })
+      {
+        g.Curves.push_back(Circle(Vec{ 0.0, 0.0, z }, r, vtkFeatureModelSource::BORDER));
+      }
+      for (const double x : { -r, r })
+      {
+        g.Curves.push_back(
+          Segment(Vec{ x, 0.0, -h }, Vec{ x, 0.0, h }, vtkFeatureModelSource::BORDER));
+        g.Corners.push_back(Vec{ x, 0.0, -h });
+        g.Corners.push_back(Vec{ x, 0.0, h });
+      }
+      return g;
+    }
+    case vtkFeatureModelSource::PLATE_WITH_HOLE:
+    {
+      Geometry g;
+      Patch plate{ Patch::Perforated, Vec{ -h, -h, 0.0 }, Vec{ size, 0.0, 0.0 },
+        Vec{ 0.0, size, 0.0 } };
+      plate.R = 0.2 * size;
+      g.Patches.push_back(plate);
+      // Its borders: the hole's rim and the outer square, whose vertices are the corners.
+      g.Curves.push_back(Circle(Vec{}, plate.R, vtkFeatureModelSource::BORDER));
+      const Vec corners[4] = { { -h, -h, 0.0 }, { h, -h, 0.0 }, { h, h, 0.0 }, { -h, h, 0.0 } };
+      for (int k = 0; k < 4; ++k)
+      {
+        g.Curves.push_back(
+          Segment(corners[k], corners[(k + 1) % 4], vtkFeatureModelSource::BORDER));
+        g.Corners.push_back(corners[k]);
       }
       return g;
     }
@@ -427,6 +592,21 @@ Geometry MakeGeometry(int model, double size, double valleySlope)
       return g;
     }
   }
+}
+
+// The length L = F x, F = FeatureSeparation, that PARALLEL_CREASES and THIN_PLATE are built with,
+// where x is the nominal spacing sqrt(area / n) of the model so built. Their area is affine in L
+// (the ribs' walls, the plate's rim; below the ribs' cap), area = A0 + A1 L, so x is the positive
+// root of n x^2 - A1 F x - A0 = 0; A0 and A1 come from the geometry itself, at L = 0 and at a
+// small L, rather than from a second copy of its formulas.
+double SeparationLength(int model, double size, vtkIdType n, double factor)
+{
+  const double probe = 0.01 * size; // well below MaxRibPitch
+  // (The valley slope is Model I's only.)
+  const double a0 = MakeGeometry(model, size, 0.0, 0.0).CumulativeAreas().back();
+  const double a1 = (MakeGeometry(model, size, 0.0, probe).CumulativeAreas().back() - a0) / probe;
+  const double b = a1 * factor, count = static_cast<double>(n);
+  return factor * (b + std::sqrt(b * b + 4.0 * count * a0)) / (2.0 * count);
 }
 } // namespace
 
@@ -457,6 +637,14 @@ const char* vtkFeatureModelSource::GetModelName(int model)
       return "Bracket";
     case BLOB:
       return "Blob";
+    case PARALLEL_CREASES:
+      return "Parallel creases";
+    case THIN_PLATE:
+      return "Thin plate";
+    case HALF_CYLINDER:
+      return "Half cylinder";
+    case PLATE_WITH_HOLE:
+      return "Plate with hole";
     default:
       return "unknown";
   }
@@ -479,6 +667,10 @@ vtkIdType vtkFeatureModelSource::GetDefaultNumberOfPoints(int model)
     case BRACKET:
       return 120000;
     case BLOB:
+    case PARALLEL_CREASES:
+    case THIN_PLATE:
+    case HALF_CYLINDER:
+    case PLATE_WITH_HOLE:
       return 100000;
     default:
       return 100000;
@@ -495,15 +687,21 @@ int vtkFeatureModelSource::RequestData(
   }
   const vtkIdType n =
     this->NumberOfPoints > 0 ? this->NumberOfPoints : GetDefaultNumberOfPoints(this->Model);
-  const Geometry geometry = MakeGeometry(this->Model, this->Size, this->ValleySlope);
-
-  std::vector<double> cumulative;
-  double area = 0.0;
-  for (const Patch& p : geometry.Patches)
+  const bool separated = this->Model == PARALLEL_CREASES || this->Model == THIN_PLATE;
+  const double separation =
+    separated ? SeparationLength(this->Model, this->Size, n, this->FeatureSeparation) : 0.0;
+  if (this->Model == PARALLEL_CREASES && separation > MaxRibPitch(this->Size))
   {
-    area += p.Area();
-    cumulative.push_back(area);
+    vtkWarningMacro("FeatureSeparation " << this->FeatureSeparation
+                                         << " would take the ribs beyond the middle "
+                                         << RibSpan << " Size of the sheet: their pitch is "
+                                         << "reduced to " << MaxRibPitch(this->Size) << ".");
   }
+  const Geometry geometry =
+    MakeGeometry(this->Model, this->Size, this->ValleySlope, separation);
+
+  const std::vector<double> cumulative = geometry.CumulativeAreas();
+  const double area = cumulative.back();
   const double band = this->DenseBandWidth * std::sqrt(area / static_cast<double>(n));
   const double keepOutside = 1.0 / this->FeatureDensityFactor;
 
@@ -511,6 +709,7 @@ int vtkFeatureModelSource::RequestData(
   Random rng(this->Seed);
   std::vector<Vec> clean(static_cast<size_t>(n));
   std::vector<double> delta(static_cast<size_t>(n));
+  std::vector<unsigned char> nearestType(static_cast<size_t>(n));
   for (vtkIdType i = 0; i < n;)
   {
     const double pick = area * rng.Uniform();
@@ -518,11 +717,13 @@ int vtkFeatureModelSource::RequestData(
       static_cast<size_t>(
         std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin()));
     const Vec p = geometry.Patches[which].Sample(rng);
-    const double d = geometry.Distance(p);
+    unsigned char type = NOT_FEATURE;
+    const double d = geometry.Distance(p, type);
     if (d <= band || rng.Uniform() < keepOutside)
     {
       clean[i] = p;
       delta[i] = d;
+      nearestType[i] = type;
       ++i;
     }
   }
@@ -556,16 +757,24 @@ int vtkFeatureModelSource::RequestData(
   vtkNew<vtkUnsignedCharArray> truth;
   truth->SetName("GroundTruth");
   truth->SetNumberOfValues(n);
+  vtkNew<vtkUnsignedCharArray> type;
+  type->SetName("FeatureType");
+  type->SetNumberOfValues(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
+    const bool positive = delta[i] <= 2.0 * s;
     distance->SetValue(i, delta[i]);
-    truth->SetValue(i, delta[i] <= 2.0 * s ? 1 : 0);
+    truth->SetValue(i, positive ? 1 : 0);
+    type->SetValue(i,
+      positive ? geometry.PositiveType(clean[i], nearestType[i], 2.0 * s)
+               : static_cast<unsigned char>(NOT_FEATURE));
   }
 
   output->SetPoints(points);
   output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(n));
   output->GetPointData()->AddArray(distance);
   output->GetPointData()->AddArray(truth);
+  output->GetPointData()->AddArray(type);
   output->GetPointData()->SetActiveScalars("GroundTruth");
   vtkNew<vtkDoubleArray> spacing;
   spacing->SetName("CleanMeanSpacing");
@@ -591,5 +800,6 @@ void vtkFeatureModelSource::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "ValleySlope: " << this->ValleySlope << "\n";
+  os << indent << "FeatureSeparation: " << this->FeatureSeparation << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
 }

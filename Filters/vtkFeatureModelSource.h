@@ -37,21 +37,57 @@
  *   r = 0.5 Size (1 + 0.15 (sin^2 phi cos 2 theta + 0.7 sin 2 phi sin theta + 0.6 P3(cos phi))),
  *   from 0.38 to 0.59 Size; principal curvature radii 0.29 Size and more.
  *
+ * Four more models stand for situations of real CAD parts: features close together, and features
+ * on the border of an open surface. The first two are sized in nominal spacings (below) by
+ * FeatureSeparation F:
+ *
+ * - PARALLEL_CREASES (100,000 points): a square sheet of side Size carrying three parallel
+ *   rectangular ribs across its middle, extruded along y. The ribs are F nominal spacings wide
+ *   and high, F apart: a row of twelve straight creases, each F from the next (along the surface
+ *   and in space), alternately concave (the ribs' feet) and convex (their top edges), all 90
+ *   degrees. The ribs stay within the middle 0.8 Size of the sheet: a larger F (above about 36 at
+ *   100,000 points) is reduced to fit, with a warning.
+ * - THIN_PLATE (100,000 points): a closed flat box of 1.0 x 0.6 Size (along x, y) and F nominal
+ *   spacings thick (along z), the thin rim faces included. Twelve straight creases, its edges:
+ *   all convex, 90 degrees; they meet by three at the eight corners. With F = 0.5 to 3, the two
+ *   edges of each rim face lie within a few spacings of each other.
+ * - HALF_CYLINDER (100,000 points): an open surface, the half y >= 0 of a cylinder of radius
+ *   0.3 Size around the z axis, 1.0 Size long (z from -0.5 to 0.5 Size), without caps. Its
+ *   borders are the features: two straight lines (x = +-0.3 Size, y = 0) and two half circles
+ *   (z = +-0.5 Size); they meet at 90 degrees at four corners. The surface is smooth elsewhere,
+ *   curvature radius 0.3 Size.
+ * - PLATE_WITH_HOLE (100,000 points): an open flat square sheet of side Size in the plane z = 0
+ *   with a circular hole of radius 0.2 Size in its middle. Its borders are the features: the
+ *   outer square and the hole's circle; the square's sides meet at 90 degrees at four corners.
+ *
+ * Models I-III and PARALLEL_CREASES stand for pieces of larger surfaces: their sheets' outer
+ * edges are not features (the creases run to them, and no corner lies there). The borders of
+ * HALF_CYLINDER and PLATE_WITH_HOLE are the edges of open parts, and are features.
+ *
  * Sampling: points are drawn independently and uniformly over the surface area (a Poisson
  * sampling, like an unorganized scan; on the blob, uniform directions kept in proportion to the
  * exact area density), except that the band within DenseBandWidth nominal spacings of a feature
  * curve is sampled FeatureDensityFactor times as densely, as the paper's re-scanned feature
- * regions (1: uniform sampling). The nominal spacing is sqrt(area / number of
- * points). Then every point is moved by isotropic Gaussian noise of standard deviation
- * NoiseFactor * s, where s is the mean nearest-neighbour distance of the clean cloud
- * (EVALUATION.md: sigma = 0.5 s by default). Everything follows from Seed: the same parameters give
- * the same cloud on every run and every thread count.
+ * regions (1: uniform sampling). The nominal spacing is sqrt(area / number of points);
+ * PARALLEL_CREASES and THIN_PLATE, whose area depends on it through FeatureSeparation, are built
+ * with the spacing that their own area gives (exactly, not an estimate). Then every point is
+ * moved by isotropic Gaussian noise of standard deviation NoiseFactor * s, where s is the mean
+ * nearest-neighbour distance of the clean cloud (EVALUATION.md: sigma = 0.5 s by default).
+ * Everything follows from Seed: the same parameters give the same cloud on every run and every
+ * thread count.
  *
  * Output: a vtkPolyData with one vertex cell per point and the point arrays
  * - `FeatureDistance` (double): the clean (pre-noise) distance delta from the point to the
- *   nearest feature curve (exact, the circles' included); VTK_FLOAT_MAX on a model without
- *   features (SPHERE, BLOB).
+ *   nearest feature curve (exact, the circles' and the borders' included); VTK_FLOAT_MAX on a
+ *   model without features (SPHERE, BLOB).
  * - `GroundTruth` (uint8): 1 for the positives of EVALUATION.md, delta <= 2 s.
+ * - `FeatureType` (uint8, FeatureTypes): NOT_FEATURE (0) where GroundTruth is 0; else CORNER (3)
+ *   within 2 s of a corner (the clean position), else the type of the nearest feature curve:
+ *   CONVEX_CREASE (1), CONCAVE_CREASE (2) or BORDER (4). The corners are the points where three
+ *   creases meet (the box's, the thin plate's and the bracket's vertices) and where two borders
+ *   meet at an angle (the half cylinder's and the plate's four). Model III's circle, where the
+ *   sheet and the cylinder cross, is both convex and concave (two of the four angles around it
+ *   are each): it is called CONVEX_CREASE.
  * and the field data `CleanMeanSpacing` (s) and `NoiseSigma`.
  *
  * @sa vtkFeaturePointEvaluation vtkFeaturePointExtraction
@@ -71,19 +107,33 @@ public:
 
   enum Models
   {
-    MODEL_I = 0,   ///< sheet with a middle valley
-    MODEL_II = 1,  ///< plateau with a gentle ridge on its flat top
-    MODEL_III = 2, ///< sheet crossed by a cylinder
-    SPHERE = 3,    ///< no feature
-    BOX = 4,       ///< closed box: 12 convex 90-degree edges
-    CYLINDER = 5,  ///< closed cylinder: 2 circular convex 90-degree rims
-    BRACKET = 6,   ///< closed L bracket: convex and concave 90-degree edges, a 20-degree crease
-    BLOB = 7,      ///< smooth bumpy closed surface, no feature
+    MODEL_I = 0,          ///< sheet with a middle valley
+    MODEL_II = 1,         ///< plateau with a gentle ridge on its flat top
+    MODEL_III = 2,        ///< sheet crossed by a cylinder
+    SPHERE = 3,           ///< no feature
+    BOX = 4,              ///< closed box: 12 convex 90-degree edges
+    CYLINDER = 5,         ///< closed cylinder: 2 circular convex 90-degree rims
+    BRACKET = 6,          ///< closed L bracket: convex, concave 90-degree edges, a 20-degree crease
+    BLOB = 7,             ///< smooth bumpy closed surface, no feature
+    PARALLEL_CREASES = 8, ///< sheet with three ribs: 12 creases FeatureSeparation apart
+    THIN_PLATE = 9,       ///< closed plate FeatureSeparation thick: 12 convex edges, 8 corners
+    HALF_CYLINDER = 10,   ///< open half cylinder: its borders (2 lines, 2 half circles)
+    PLATE_WITH_HOLE = 11, ///< open square sheet with a round hole: its borders
+  };
+
+  /** The values of the FeatureType array. */
+  enum FeatureTypes
+  {
+    NOT_FEATURE = 0,    ///< not a positive (GroundTruth 0)
+    CONVEX_CREASE = 1,  ///< nearest a convex crease
+    CONCAVE_CREASE = 2, ///< nearest a concave crease
+    CORNER = 3,         ///< within 2 s of a corner
+    BORDER = 4,         ///< nearest a border of an open surface
   };
 
   ///@{
   /** Which model. Default MODEL_I. */
-  vtkSetClampMacro(Model, int, MODEL_I, BLOB);
+  vtkSetClampMacro(Model, int, MODEL_I, PLATE_WITH_HOLE);
   vtkGetMacro(Model, int);
   void SetModelToModelI() { this->SetModel(MODEL_I); }
   void SetModelToModelII() { this->SetModel(MODEL_II); }
@@ -93,6 +143,10 @@ public:
   void SetModelToCylinder() { this->SetModel(CYLINDER); }
   void SetModelToBracket() { this->SetModel(BRACKET); }
   void SetModelToBlob() { this->SetModel(BLOB); }
+  void SetModelToParallelCreases() { this->SetModel(PARALLEL_CREASES); }
+  void SetModelToThinPlate() { this->SetModel(THIN_PLATE); }
+  void SetModelToHalfCylinder() { this->SetModel(HALF_CYLINDER); }
+  void SetModelToPlateWithHole() { this->SetModel(PLATE_WITH_HOLE); }
   ///@}
 
   /** The model's name ("Model I", ..., "Box", ...), and its default number of points. */
@@ -102,8 +156,9 @@ public:
   ///@{
   /**
    * Number of points; 0 (default) takes the model's own count (170,000, 220,000, 130,000 for
-   * Models I-III as in the paper's Table 1; 100,000 for the sphere, the box and the blob; 80,000
-   * for the cylinder; 120,000 for the bracket).
+   * Models I-III as in the paper's Table 1; 100,000 for the sphere, the box, the blob and the
+   * four models of close and bordered features; 80,000 for the cylinder; 120,000 for the
+   * bracket).
    */
   vtkSetClampMacro(NumberOfPoints, vtkIdType, 0, VTK_INT_MAX);
   vtkGetMacro(NumberOfPoints, vtkIdType);
@@ -132,8 +187,8 @@ public:
 
   ///@{
   /**
-   * Size of the model (sheet side, sphere and blob diameter, the box's and the bracket's length)
-   * in the output's units. Default 100.
+   * Size of the model (sheet side, sphere and blob diameter, the box's, the bracket's, the thin
+   * plate's and the half cylinder's length) in the output's units. Default 100.
    */
   vtkSetClampMacro(Size, double, 1e-12, 1e12);
   vtkGetMacro(Size, double);
@@ -158,6 +213,15 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Distance between the neighbouring creases of PARALLEL_CREASES (the ribs' width, height and
+   * gap), and THIN_PLATE's thickness, in nominal spacings. Default 5; other models ignore it.
+   */
+  vtkSetClampMacro(FeatureSeparation, double, 0.1, 1000.0);
+  vtkGetMacro(FeatureSeparation, double);
+  ///@}
+
+  ///@{
   /** vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) output points. */
   vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DOUBLE_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
@@ -178,6 +242,7 @@ protected:
   double Center[3] = { 0.0, 0.0, 0.0 };
   unsigned int Seed = 1;
   double ValleySlope = 30.0;
+  double FeatureSeparation = 5.0;
   int OutputPointsPrecision = DOUBLE_PRECISION;
 
 private:

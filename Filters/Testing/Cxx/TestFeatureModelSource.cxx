@@ -5,12 +5,16 @@
 #include "vtkFieldData.h"
 
 #include <algorithm>
+#include <array>
+#include <cfloat>
+#include <functional>
+#include <set>
 #include <string>
 
 namespace
 {
 vtkSmartPointer<vtkPolyData> Generate(int model, vtkIdType n, double density, double noise,
-  unsigned seed = 1)
+  unsigned seed = 1, double separation = 5.0)
 {
   vtkNew<vtkFeatureModelSource> source;
   source->SetModel(model);
@@ -18,6 +22,7 @@ vtkSmartPointer<vtkPolyData> Generate(int model, vtkIdType n, double density, do
   source->SetFeatureDensityFactor(density);
   source->SetNoiseFactor(noise);
   source->SetSeed(seed);
+  source->SetFeatureSeparation(separation);
   source->Update();
   return source->GetOutput();
 }
@@ -61,12 +66,193 @@ void BracketProfile(double x[7], double z[7])
 
 // Positives expected: within 2 s of L units of feature curves lie about 2 (2 s) L of area, within
 // the band B = DenseBandWidth nominal spacings about 2 B L, sampled FeatureDensityFactor times
-// denser than the rest of the area A (the corners' overlaps neglected).
+// denser than the rest of the area A (the corners' overlaps neglected). A border has the surface
+// on one side only: it counts as half its length.
 double ExpectedPositiveFraction(double area, double length, double s, vtkIdType n, double factor)
 {
   const double band = 5.0 * std::sqrt(area / static_cast<double>(n));
   const double positive = 4.0 * s * length, banded = std::min(area, 2.0 * band * length);
   return factor * positive / (factor * banded + area - banded);
+}
+
+// The length L = F x that PARALLEL_CREASES and THIN_PLATE are built with (class documentation), x
+// being the nominal spacing sqrt(area / n) of the model so built, whose area is a0 + a1 L: the
+// ribs' model has a0 = Size^2 and a1 = 6 Size (six walls L high), the plate a0 = 1.2 Size^2 and
+// a1 = 3.2 Size (its rim, L high). Solved here from that promise alone.
+double SeparationLength(double a0, double a1, vtkIdType n, double factor)
+{
+  const double b = a1 * factor, count = static_cast<double>(n);
+  return factor * (b + std::sqrt(b * b + 4.0 * count * a0)) / (2.0 * count);
+}
+
+// The ground truth of a model recomputed here from its documented geometry, at a clean point p:
+// the distance to the surface, delta (to the nearest feature curve), and the FeatureType a
+// positive has there, given the corners' radius 2 s.
+struct Truth
+{
+  double Surface, Delta;
+  int Type;
+};
+using TruthFunction = std::function<Truth(const double p[3], double radius)>;
+
+// A clean cloud (NoiseFactor 0) against its ground truth: every point on the surface (within
+// 1e-9 Size), its FeatureDistance the recomputed delta, GroundTruth delta <= 2 s and FeatureType
+// the recomputed type on the positives, 0 elsewhere.
+void CheckClean(const std::string& name, vtkPolyData* cloud, const TruthFunction& truth,
+  int& failures)
+{
+  vtkDataArray* d = cloud->GetPointData()->GetArray("FeatureDistance");
+  vtkDataArray* labels = cloud->GetPointData()->GetArray("GroundTruth");
+  vtkDataArray* types = cloud->GetPointData()->GetArray("FeatureType");
+  FP_CHECK(d && labels && types, "%s: arrays", name.c_str());
+  if (!d || !labels || !types)
+  {
+    return;
+  }
+  const double twoS = 2.0 * Field(cloud, "CleanMeanSpacing"), tol = 1e-9 * 100.0; // Size 100
+  double surface = 0.0, error = 0.0;
+  long wrongLabel = 0, wrongType = 0;
+  for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    cloud->GetPoint(i, p);
+    const Truth t = truth(p, twoS);
+    const bool positive = t.Delta <= twoS;
+    surface = std::max(surface, t.Surface);
+    error = std::max(error, std::abs(t.Delta - d->GetComponent(i, 0)));
+    wrongLabel += (labels->GetComponent(i, 0) != 0) != positive;
+    wrongType += types->GetComponent(i, 0) != (positive ? t.Type : 0);
+  }
+  std::printf("%s clean: surface error %.2e, distance error %.2e, %ld wrong labels, %ld wrong "
+              "types\n", name.c_str(), surface, error, wrongLabel, wrongType);
+  FP_CHECK(surface < tol && error < tol && wrongLabel == 0 && wrongType == 0,
+    "%s: surface %g, distance %g, %ld wrong labels, %ld wrong types", name.c_str(), surface, error,
+    wrongLabel, wrongType);
+}
+
+// The box of half-edges hx, hy, hz centred on the origin (BOX, THIN_PLATE): its edges are convex,
+// its corners are where the three coordinates are on their faces.
+TruthFunction BoxTruth(double hx, double hy, double hz)
+{
+  return [=](const double p[3], double radius) {
+    const double half[3] = { hx, hy, hz };
+    double g[3], face = DBL_MAX, outside = -DBL_MAX;
+    for (int k = 0; k < 3; ++k)
+    {
+      g[k] = std::abs(p[k]) - half[k]; // <= 0 inside, 0 on the faces normal to axis k
+      outside = std::max(outside, g[k]);
+      face = std::min(face, std::abs(g[k]));
+    }
+    // The edges along axis k lie where the other two coordinates are on their faces.
+    const double edge =
+      std::min({ std::hypot(g[1], g[2]), std::hypot(g[0], g[2]), std::hypot(g[0], g[1]) });
+    const double corner = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    return Truth{ std::max(face, outside), edge,
+      corner <= radius ? vtkFeatureModelSource::CORNER : vtkFeatureModelSource::CONVEX_CREASE };
+  };
+}
+
+// PARALLEL_CREASES of rib pitch d: the profile z(x) with three ribs d wide and high, d apart,
+// centred on x = 0; their feet are concave, their top edges convex.
+TruthFunction RibsTruth(double size, double d)
+{
+  std::vector<std::array<double, 2>> profile{ { -0.5 * size, 0.0 } };
+  for (int k = 0; k < 3; ++k)
+  {
+    const double left = (2 * k - 2.5) * d;
+    profile.insert(profile.end(), { { left, 0.0 }, { left, d }, { left + d, d }, { left + d, 0.0 } });
+  }
+  profile.push_back({ 0.5 * size, 0.0 });
+  return [=](const double p[3], double) {
+    Truth t{ DBL_MAX, DBL_MAX, 0 };
+    const double q[3] = { p[0], 0.0, p[2] };
+    for (size_t k = 0; k + 1 < profile.size(); ++k)
+    {
+      const double a[3] = { profile[k][0], 0.0, profile[k][1] };
+      const double b[3] = { profile[k + 1][0], 0.0, profile[k + 1][1] };
+      t.Surface = std::min(t.Surface, SegmentDistance(q, a, b));
+      const double crease = std::hypot(p[0] - a[0], p[2] - a[2]);
+      if (k > 0 && crease < t.Delta)
+      {
+        t.Delta = crease;
+        t.Type = a[2] > 0.0 ? vtkFeatureModelSource::CONVEX_CREASE
+                            : vtkFeatureModelSource::CONCAVE_CREASE;
+      }
+    }
+    t.Surface += std::max(0.0, std::abs(p[1]) - 0.5 * size);
+    return t;
+  };
+}
+
+// HALF_CYLINDER: radius 0.3 Size around z, y >= 0, |z| <= 0.5 Size; its borders, the half circles
+// and the lines x = +-0.3 Size, y = 0, meet at four corners.
+TruthFunction HalfCylinderTruth(double size)
+{
+  return [=](const double p[3], double radius) {
+    const double r = 0.3 * size, h = 0.5 * size, rho = std::hypot(p[0], p[1]);
+    const double surface =
+      std::abs(rho - r) + std::max(0.0, -p[1]) + std::max(0.0, std::abs(p[2]) - h);
+    const double delta = std::min({ std::hypot(rho - r, h - std::abs(p[2])),
+      std::hypot(p[0] - r, p[1]), std::hypot(p[0] + r, p[1]) });
+    const double corner = std::hypot(std::hypot(std::abs(p[0]) - r, p[1]), h - std::abs(p[2]));
+    return Truth{ surface, delta,
+      corner <= radius ? vtkFeatureModelSource::CORNER : vtkFeatureModelSource::BORDER };
+  };
+}
+
+// PLATE_WITH_HOLE: the square |x|, |y| <= 0.5 Size in z = 0 less the disk of radius 0.2 Size; its
+// borders, the square and the circle; corners, the square's.
+TruthFunction PlateWithHoleTruth(double size)
+{
+  return [=](const double p[3], double radius) {
+    const double h = 0.5 * size, r = 0.2 * size, rho = std::hypot(p[0], p[1]);
+    const double surface = std::abs(p[2]) + std::max(0.0, std::abs(p[0]) - h) +
+      std::max(0.0, std::abs(p[1]) - h) + std::max(0.0, r - rho);
+    const double delta = std::min({ h - std::abs(p[0]), h - std::abs(p[1]), rho - r });
+    const double corner = std::hypot(h - std::abs(p[0]), h - std::abs(p[1]));
+    return Truth{ surface, delta,
+      corner <= radius ? vtkFeatureModelSource::CORNER : vtkFeatureModelSource::BORDER };
+  };
+}
+
+// FeatureDistance at the point nearest the position q, against the distance `expected` of q to
+// the features: delta is 1-Lipschitz, so the two differ by at most the point's distance to q.
+void CheckHandPicked(const std::string& name, vtkPolyData* cloud, const std::array<double, 3>& q,
+  double expected, int& failures)
+{
+  vtkIdType nearest = 0;
+  double best = DBL_MAX;
+  for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    cloud->GetPoint(i, p);
+    const double gap = std::hypot(std::hypot(p[0] - q[0], p[1] - q[1]), p[2] - q[2]);
+    if (gap < best)
+    {
+      best = gap;
+      nearest = i;
+    }
+  }
+  const double delta = cloud->GetPointData()->GetArray("FeatureDistance")->GetComponent(nearest, 0);
+  const double s = Field(cloud, "CleanMeanSpacing");
+  std::printf("%s at (%g, %g, %g): FeatureDistance %.4f of the point %.4f away, %.4f expected\n",
+    name.c_str(), q[0], q[1], q[2], delta, best, expected);
+  FP_CHECK(best < 5.0 * s && std::abs(delta - expected) <= best + 1e-9,
+    "%s at (%g, %g, %g): FeatureDistance %g of the point %g away, %g expected", name.c_str(), q[0],
+    q[1], q[2], delta, best, expected);
+}
+
+// How many points of each FeatureType.
+std::array<long, 5> TypeCounts(vtkPolyData* cloud)
+{
+  std::array<long, 5> counts{};
+  vtkDataArray* types = cloud->GetPointData()->GetArray("FeatureType");
+  for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
+  {
+    const int t = static_cast<int>(types->GetComponent(i, 0));
+    counts[std::min(4, std::max(0, t))]++;
+  }
+  return counts;
 }
 } // namespace
 
@@ -82,32 +268,43 @@ int TestFeatureModelSource(int, char*[])
   const double a = 0.15 * size, depth = a * std::tan(30.0 * M_PI / 180.0);
   vtkDataArray* delta = clean->GetPointData()->GetArray("FeatureDistance");
   vtkDataArray* truth = clean->GetPointData()->GetArray("GroundTruth");
+  vtkDataArray* type = clean->GetPointData()->GetArray("FeatureType");
   const double s = Field(clean, "CleanMeanSpacing");
-  FP_CHECK(clean->GetNumberOfPoints() == 20000 && delta && truth, "output shape");
+  FP_CHECK(clean->GetNumberOfPoints() == 20000 && delta && truth && type, "output shape");
   FP_CHECK(s > 0.0 && Field(clean, "NoiseSigma") == 0.0, "s %g", s);
   double worstSurface = 0.0, worstDelta = 0.0;
-  long wrongLabel = 0;
-  for (vtkIdType i = 0; delta && truth && i < clean->GetNumberOfPoints(); ++i)
+  long wrongLabel = 0, wrongType = 0;
+  for (vtkIdType i = 0; delta && truth && type && i < clean->GetNumberOfPoints(); ++i)
   {
     double p[3];
     clean->GetPoint(i, p);
     const double z = std::abs(p[0]) < a ? -depth * (1.0 - std::abs(p[0]) / a) : 0.0;
     worstSurface = std::max(worstSurface, std::abs(p[2] - z));
+    // The shoulders are convex, the valley floor concave; no corner (the sheet's edges are not
+    // features).
     const double corners[3][2] = { { -a, 0.0 }, { 0.0, -depth }, { a, 0.0 } };
     double d = VTK_DOUBLE_MAX;
-    for (const auto& c : corners)
+    int nearest = 0;
+    for (int k = 0; k < 3; ++k)
     {
-      d = std::min(d, std::hypot(p[0] - c[0], p[2] - c[1]));
+      const double dk = std::hypot(p[0] - corners[k][0], p[2] - corners[k][1]);
+      nearest = dk < d ? k : nearest;
+      d = std::min(d, dk);
     }
+    const int expectedType = d > 2.0 * s ? 0
+      : nearest == 1                     ? vtkFeatureModelSource::CONCAVE_CREASE
+                                         : vtkFeatureModelSource::CONVEX_CREASE;
     worstDelta = std::max(worstDelta, std::abs(d - delta->GetComponent(i, 0)));
     wrongLabel += (truth->GetComponent(i, 0) != 0) != (d <= 2.0 * s);
+    wrongType += type->GetComponent(i, 0) != expectedType;
     FP_CHECK(std::abs(p[1]) <= h + 1e-9 && std::abs(p[0]) <= h + 1e-9, "point %lld outside the sheet", (long long)i);
   }
-  std::printf("Model I clean: s %.4f, surface error %.2e, distance error %.2e, %ld wrong labels\n",
-    s, worstSurface, worstDelta, wrongLabel);
+  std::printf("Model I clean: s %.4f, surface error %.2e, distance error %.2e, %ld wrong labels, "
+              "%ld wrong types\n", s, worstSurface, worstDelta, wrongLabel, wrongType);
   FP_CHECK(worstSurface < 1e-9, "a point is off the surface by %g", worstSurface);
   FP_CHECK(worstDelta < 1e-9, "FeatureDistance off by %g", worstDelta);
   FP_CHECK(wrongLabel == 0, "%ld ground-truth labels disagree with delta <= 2 s", wrongLabel);
+  FP_CHECK(wrongType == 0, "%ld FeatureType values disagree with the nearest crease", wrongType);
 
   // Denser band: the points within the band are 3x as dense as the rest, by area. Compare the
   // density in the band's core (delta < 0.5 band) with the flat parts far from any crease.
@@ -192,14 +389,19 @@ int TestFeatureModelSource(int, char*[])
   // The closed parts the defaults were not tuned on, and the blob, as a benchmark makes them (the
   // model's own count, features 3x denser, sigma = 0.5 s): count, names, finite non-negative
   // distances (VTK_FLOAT_MAX on the blob), labels = delta <= 2 s, and a plausible share of
-  // positives against the feature length (in Size units) and area (in Size^2).
+  // positives against the feature length (in Size units, borders counted half) and area (in
+  // Size^2). The models of close and bordered features likewise, but sampled uniformly: the
+  // estimate's denser bands would overlap between creases a few spacings apart. Their rib pitch
+  // and plate thickness follow from FeatureSeparation 5 at 100,000 points.
   struct Part
   {
     int Model;
     const char* Name;
     vtkIdType Count;
-    double Length, Area;
+    double Length, Area, Density;
   };
+  const double rib = SeparationLength(1.0, 6.0, 100000, 5.0);
+  const double plate = SeparationLength(1.2, 3.2, 100000, 5.0);
   double bx[7], bz[7], perimeter = 0.0, profileArea = 0.0;
   BracketProfile(bx, bz);
   for (int k = 0; k < 7; ++k)
@@ -209,16 +411,27 @@ int TestFeatureModelSource(int, char*[])
     profileArea += 0.5 * (bx[k] * bz[l] - bx[l] * bz[k]);
   }
   const Part parts[] = {
-    { vtkFeatureModelSource::BOX, "Box", 100000, 4.0 * (1.0 + 0.7 + 0.5), 2.0 * (0.7 + 0.5 + 0.35) },
-    { vtkFeatureModelSource::CYLINDER, "Cylinder", 80000, 2.0 * 2.0 * M_PI * 0.3, 2.0 * M_PI * 0.3 * 0.6 + 2.0 * M_PI * 0.09 },
+    { vtkFeatureModelSource::BOX, "Box", 100000, 4.0 * (1.0 + 0.7 + 0.5),
+      2.0 * (0.7 + 0.5 + 0.35), 3.0 },
+    { vtkFeatureModelSource::CYLINDER, "Cylinder", 80000, 2.0 * 2.0 * M_PI * 0.3,
+      2.0 * M_PI * 0.3 * 0.6 + 2.0 * M_PI * 0.09, 3.0 },
     { vtkFeatureModelSource::BRACKET, "Bracket", 120000, 7 * 0.5 + 2.0 * perimeter,
-      0.5 * perimeter + 2.0 * profileArea },
-    { vtkFeatureModelSource::BLOB, "Blob", 100000, 0.0, 0.0 },
+      0.5 * perimeter + 2.0 * profileArea, 3.0 },
+    { vtkFeatureModelSource::BLOB, "Blob", 100000, 0.0, 0.0, 3.0 },
+    { vtkFeatureModelSource::PARALLEL_CREASES, "Parallel creases", 100000, 12.0, 1.0 + 6.0 * rib,
+      1.0 },
+    { vtkFeatureModelSource::THIN_PLATE, "Thin plate", 100000, 4.0 * (1.0 + 0.6 + plate),
+      1.2 + 3.2 * plate, 1.0 },
+    { vtkFeatureModelSource::HALF_CYLINDER, "Half cylinder", 100000, 0.5 * (2.0 + 2.0 * M_PI * 0.3),
+      M_PI * 0.3, 1.0 },
+    { vtkFeatureModelSource::PLATE_WITH_HOLE, "Plate with hole", 100000,
+      0.5 * (4.0 + 2.0 * M_PI * 0.2), 1.0 - M_PI * 0.04, 1.0 },
   };
   for (const Part& part : parts)
   {
     vtkNew<vtkFeatureModelSource> source;
     source->SetModel(part.Model);
+    source->SetFeatureDensityFactor(part.Density);
     source->Update();
     vtkPolyData* out = source->GetOutput();
     const vtkIdType n = out->GetNumberOfPoints();
@@ -244,7 +457,7 @@ int TestFeatureModelSource(int, char*[])
     const long positives = CountSet(labels);
     const double fraction = positives / static_cast<double>(n);
     const double expected = part.Length > 0.0
-      ? ExpectedPositiveFraction(part.Area * size * size, part.Length * size, sp, n, 3.0)
+      ? ExpectedPositiveFraction(part.Area * size * size, part.Length * size, sp, n, part.Density)
       : 0.0;
     std::printf("%s: %lld points, s %.4f, NoiseSigma %.4f, %ld positives (%.2f%%, about %.2f%% "
                 "expected), %ld bad distances, %ld wrong labels\n",
@@ -266,30 +479,8 @@ int TestFeatureModelSource(int, char*[])
   // Without noise, every point of the parts lies on the surface (within 1e-9 Size) and its
   // FeatureDistance is the distance to the nearest feature curve, recomputed here.
   const double tol = 1e-9 * size;
-  {
-    auto box = Generate(vtkFeatureModelSource::BOX, 20000, 3.0, 0.0);
-    vtkDataArray* d = box->GetPointData()->GetArray("FeatureDistance");
-    const double half[3] = { 0.5 * size, 0.35 * size, 0.25 * size };
-    double surface = 0.0, outside = 0.0, error = 0.0;
-    for (vtkIdType i = 0; i < box->GetNumberOfPoints(); ++i)
-    {
-      double p[3], g[3];
-      box->GetPoint(i, p);
-      double face = VTK_DOUBLE_MAX;
-      for (int k = 0; k < 3; ++k)
-      {
-        g[k] = std::abs(p[k]) - half[k]; // <= 0 inside, 0 on the faces normal to axis k
-        outside = std::max(outside, g[k]);
-        face = std::min(face, std::abs(g[k]));
-      }
-      surface = std::max(surface, face);
-      // The edges along axis k lie where the other two coordinates are on their faces.
-      const double edge = std::min({ std::hypot(g[1], g[2]), std::hypot(g[0], g[2]), std::hypot(g[0], g[1]) });
-      error = std::max(error, std::abs(edge - d->GetComponent(i, 0)));
-    }
-    std::printf("Box clean: surface error %.2e, outside by %.2e, distance error %.2e\n", surface, outside, error);
-    FP_CHECK(surface < tol && outside < tol && error < tol, "box: surface %g, outside %g, distance %g", surface, outside, error);
-  }
+  CheckClean("Box", Generate(vtkFeatureModelSource::BOX, 20000, 3.0, 0.0),
+    BoxTruth(0.5 * size, 0.35 * size, 0.25 * size), failures);
   {
     // Uniform sampling (factor 1): the caps hold R / (2 H + R) = 1/3 of the area.
     auto cylinder = Generate(vtkFeatureModelSource::CYLINDER, 30000, 1.0, 0.0);
@@ -430,6 +621,177 @@ int TestFeatureModelSource(int, char*[])
                 "area (0.5 of the directions)\n", surface, share, expectedShare);
     FP_CHECK(surface < tol, "blob: surface error %g", surface);
     FP_CHECK(std::abs(share - expectedShare) < 0.0065, "blob: |x| > |y| %.4f vs area %.4f", share, expectedShare); // 4 sd
+  }
+
+  // The models of close and bordered features without noise: on their surfaces, the ground truth
+  // exact, and the distance right at a few hand-picked positions (in Size units).
+  using Position = std::array<double, 3>;
+  {
+    const double d = SeparationLength(1.0, 6.0, 20000, 5.0) * size;
+    auto ribs = Generate(vtkFeatureModelSource::PARALLEL_CREASES, 20000, 3.0, 0.0);
+    CheckClean("Parallel creases", ribs, RibsTruth(size, d), failures);
+    // The middle rib's top centre and the middle of the gap beside it, half a pitch from two
+    // creases; the flat sheet 0.4 Size out, beyond the last rib's foot at 2.5 pitches.
+    CheckHandPicked("Parallel creases", ribs, Position{ 0.0, 0.0, d }, 0.5 * d, failures);
+    CheckHandPicked("Parallel creases", ribs, Position{ -d, 0.0, 0.0 }, 0.5 * d, failures);
+    CheckHandPicked("Parallel creases", ribs, Position{ 0.4 * size, 0.0, 0.0 },
+      0.4 * size - 2.5 * d, failures);
+
+    const double t = SeparationLength(1.2, 3.2, 20000, 5.0) * size;
+    auto plate = Generate(vtkFeatureModelSource::THIN_PLATE, 20000, 3.0, 0.0);
+    CheckClean("Thin plate", plate, BoxTruth(0.5 * size, 0.3 * size, 0.5 * t), failures);
+    CheckHandPicked("Thin plate", plate, Position{ 0.0, 0.0, 0.5 * t }, 0.3 * size, failures);
+    CheckHandPicked("Thin plate", plate, Position{ 0.45 * size, 0.2 * size, 0.5 * t }, 0.05 * size,
+      failures);
+
+    // The arch's top is sqrt(2) R from both straight borders, 0.5 Size from the half circles.
+    const double r = 0.3 * size;
+    auto half = Generate(vtkFeatureModelSource::HALF_CYLINDER, 20000, 3.0, 0.0);
+    CheckClean("Half cylinder", half, HalfCylinderTruth(size), failures);
+    CheckHandPicked("Half cylinder", half, Position{ 0.0, r, 0.0 }, std::sqrt(2.0) * r, failures);
+    CheckHandPicked("Half cylinder", half,
+      Position{ r * std::cos(M_PI / 6), r * std::sin(M_PI / 6), 0.45 * size }, 0.05 * size,
+      failures);
+
+    auto holed = Generate(vtkFeatureModelSource::PLATE_WITH_HOLE, 20000, 3.0, 0.0);
+    CheckClean("Plate with hole", holed, PlateWithHoleTruth(size), failures);
+    CheckHandPicked("Plate with hole", holed, Position{ 0.35 * size, 0.0, 0.0 }, 0.15 * size,
+      failures);
+    CheckHandPicked("Plate with hole", holed, Position{ 0.45 * size, 0.45 * size, 0.0 },
+      0.05 * size, failures);
+    CheckHandPicked("Plate with hole", holed, Position{ 0.0, -0.25 * size, 0.0 }, 0.05 * size,
+      failures);
+  }
+
+  // FeatureSeparation sets the distance of neighbouring creases in nominal spacings of the cloud
+  // as built. The ribs' walls are the only points strictly between z = 0 and the ribs' height d,
+  // at the six x of the walls: the creases lie at their feet and tops, each d from the next.
+  for (const double separation : { 2.0, 5.0, 8.0 })
+  {
+    auto ribs = Generate(vtkFeatureModelSource::PARALLEL_CREASES, 20000, 3.0, 0.0, 1, separation);
+    double d = 0.0;
+    for (vtkIdType i = 0; i < ribs->GetNumberOfPoints(); ++i)
+    {
+      d = std::max(d, ribs->GetPoint(i)[2]);
+    }
+    std::set<double> walls;
+    for (vtkIdType i = 0; i < ribs->GetNumberOfPoints(); ++i)
+    {
+      const double* p = ribs->GetPoint(i);
+      if (p[2] > 0.0 && p[2] < d)
+      {
+        walls.insert(p[0]);
+      }
+    }
+    double worstGap = 0.0;
+    for (auto w = walls.begin(); w != walls.end() && std::next(w) != walls.end(); ++w)
+    {
+      worstGap = std::max(worstGap, std::abs(*std::next(w) - *w - d));
+    }
+    const double nominal = std::sqrt((size * size + 6.0 * d * size) / 20000.0);
+    std::printf("Parallel creases, FeatureSeparation %g: creases %.4f apart, %.6f nominal "
+                "spacings; %zu walls, their gaps off by %.2e\n",
+      separation, d, d / nominal, walls.size(), worstGap);
+    FP_CHECK(walls.size() == 6 && worstGap < 1e-9 * size, "%zu walls, gaps off by %g", walls.size(),
+      worstGap);
+    FP_CHECK(std::abs(d / nominal - separation) < 1e-9, "creases %g spacings apart, %g asked",
+      d / nominal, separation);
+    FP_CHECK(std::abs(d - SeparationLength(1.0, 6.0, 20000, separation) * size) < 1e-9 * size,
+      "rib pitch %g", d);
+  }
+  {
+    // Too wide ribs are reduced to fit the middle 0.8 Size: a pitch of 0.8 / 5 Size.
+    vtkNew<vtkFeatureModelSource> source;
+    source->SetModelToParallelCreases();
+    source->SetNumberOfPoints(5000);
+    source->SetNoiseFactor(0.0);
+    source->SetFeatureSeparation(1000.0);
+    source->GlobalWarningDisplayOff();
+    source->Update();
+    source->GlobalWarningDisplayOn();
+    double top = 0.0;
+    for (vtkIdType i = 0; i < source->GetOutput()->GetNumberOfPoints(); ++i)
+    {
+      top = std::max(top, source->GetOutput()->GetPoint(i)[2]);
+    }
+    FP_CHECK(std::abs(top - 0.16 * size) < 1e-9 * size, "capped ribs %g high", top);
+  }
+  // The thin plate's thickness: the z extent of the clean cloud, in nominal spacings; and its
+  // ground truth, the two edges of each rim face within a few spacings.
+  for (const double separation : { 0.5, 1.0, 3.0 })
+  {
+    auto plate = Generate(vtkFeatureModelSource::THIN_PLATE, 20000, 3.0, 0.0, 1, separation);
+    double bounds[6];
+    plate->GetBounds(bounds);
+    const double t = bounds[5] - bounds[4];
+    const double nominal = std::sqrt((1.2 * size * size + 3.2 * size * t) / 20000.0);
+    std::printf("Thin plate, FeatureSeparation %g: %.4f thick, %.6f nominal spacings\n", separation,
+      t, t / nominal);
+    FP_CHECK(std::abs(t / nominal - separation) < 1e-9, "plate %g spacings thick, %g asked",
+      t / nominal, separation);
+    const double expected = SeparationLength(1.2, 3.2, 20000, separation) * size;
+    char name[64];
+    std::snprintf(name, sizeof(name), "Thin plate %g spacings thick", separation);
+    CheckClean(name, plate,
+      BoxTruth(0.5 * size, 0.3 * size, 0.5 * expected), failures);
+  }
+
+  // FeatureType by model, summed over three seeds (a corner where two borders meet at 90 degrees
+  // holds about one positive per cloud): each model has the types of its features and no other;
+  // borders only on the open models; FeatureType set exactly on the positives.
+  struct Types
+  {
+    int Model;
+    unsigned Present; // bit t: some point has the FeatureType t
+  };
+  const unsigned convex = 1u << vtkFeatureModelSource::CONVEX_CREASE,
+                 concave = 1u << vtkFeatureModelSource::CONCAVE_CREASE,
+                 corner = 1u << vtkFeatureModelSource::CORNER,
+                 border = 1u << vtkFeatureModelSource::BORDER;
+  const Types types[] = {
+    { vtkFeatureModelSource::MODEL_I, convex | concave },
+    { vtkFeatureModelSource::MODEL_II, convex | concave },
+    { vtkFeatureModelSource::MODEL_III, convex },
+    { vtkFeatureModelSource::SPHERE, 0u },
+    { vtkFeatureModelSource::BOX, convex | corner },
+    { vtkFeatureModelSource::CYLINDER, convex },
+    { vtkFeatureModelSource::BRACKET, convex | concave | corner },
+    { vtkFeatureModelSource::BLOB, 0u },
+    { vtkFeatureModelSource::PARALLEL_CREASES, convex | concave },
+    { vtkFeatureModelSource::THIN_PLATE, convex | corner },
+    { vtkFeatureModelSource::HALF_CYLINDER, border | corner },
+    { vtkFeatureModelSource::PLATE_WITH_HOLE, border | corner },
+  };
+  for (const Types& expected : types)
+  {
+    std::array<long, 5> counts{};
+    long mismatched = 0;
+    for (unsigned seed = 1; seed <= 3; ++seed)
+    {
+      auto cloud = Generate(expected.Model, 20000, 3.0, 0.5, seed);
+      const std::array<long, 5> c = TypeCounts(cloud);
+      for (int t = 0; t < 5; ++t)
+      {
+        counts[t] += c[t];
+      }
+      vtkDataArray* labels = cloud->GetPointData()->GetArray("GroundTruth");
+      vtkDataArray* type = cloud->GetPointData()->GetArray("FeatureType");
+      for (vtkIdType i = 0; type && i < cloud->GetNumberOfPoints(); ++i)
+      {
+        mismatched += (type->GetComponent(i, 0) != 0) != (labels->GetComponent(i, 0) != 0);
+      }
+    }
+    unsigned present = 0;
+    for (int t = 1; t < 5; ++t)
+    {
+      present |= counts[t] > 0 ? 1u << t : 0u;
+    }
+    std::printf("%-16s FeatureType: %ld none, %ld convex, %ld concave, %ld corner, %ld border\n",
+      vtkFeatureModelSource::GetModelName(expected.Model), counts[0], counts[1], counts[2],
+      counts[3], counts[4]);
+    FP_CHECK(present == expected.Present && mismatched == 0,
+      "%s: FeatureType present 0x%x, 0x%x expected; %ld points typed but not positive or back",
+      vtkFeatureModelSource::GetModelName(expected.Model), present, expected.Present, mismatched);
   }
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
