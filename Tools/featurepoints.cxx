@@ -84,6 +84,9 @@ struct Method
   // the threshold (hysteresis; NaN when the run grew nothing).
   std::function<std::string(vtkFeaturePointDetector*)> Details = nullptr;
   std::function<double(vtkFeaturePointDetector*)> GrowThreshold = nullptr;
+  // Whether the output's FeatureType array holds vtkCreaseVotingFeatures::FeatureTypes: the
+  // summary then counts the feature points of each type.
+  bool FeatureTypes = false;
 };
 
 vtkCreaseVotingFeatures* Crease(vtkFeaturePointDetector* f)
@@ -98,7 +101,8 @@ const std::vector<Method>& Methods()
       "the default: two-plane crease fits and a neighbourhood vote; score CreaseVotes, the "
       "fraction of the neighbourhood whose fitted crease line passes near the point; a feature "
       "point has a majority (> 0.5), then the features grow through points above "
-      "--grow-threshold plus the cloud's median vote",
+      "--grow-threshold plus the cloud's median vote, and open borders join them; array "
+      "FeatureType: 1 convex crease, 2 concave crease, 3 corner, 4 border, 0 no feature",
       [] { return vtkSmartPointer<vtkCreaseVotingFeatures>::New(); },
       [](vtkFeaturePointDetector* f) {
         std::ostringstream s;
@@ -111,7 +115,8 @@ const std::vector<Method>& Methods()
         return Crease(f)->GetGrowThresholdUsed() < f->GetThresholdUsed()
           ? Crease(f)->GetGrowThresholdUsed()
           : std::nan("");
-      } },
+      },
+      true },
     { "huang2023",
       "the proposed method: SSI and PDI mixed into F, voxel density pre-filter (Huang, Chen, "
       "Zhang, Lu 2023)",
@@ -139,7 +144,9 @@ const Method* FindMethod(const std::string& name)
   return nullptr;
 }
 
-// A numeric or keyword option of a filter. `Methods` lists the methods it applies to (empty: all).
+// A numeric or keyword option of a filter, or a flag. `Methods` lists the methods it applies to
+// (empty: all). A flag takes no value: given, it calls Apply(filter, 1); its Default is 1 when the
+// filter already behaves so without it (printed "on", else "off").
 struct FilterOption
 {
   const char* Name;
@@ -151,6 +158,7 @@ struct FilterOption
   std::function<void(vtkFeaturePointDetector*, double)> Apply;
   std::function<double(vtkFeaturePointDetector*)> Default; // NaN: no number ("automatic")
   const char* Help;
+  bool Flag = false;
 };
 
 vtkFeaturePointExtraction* Extraction(vtkFeaturePointDetector* f)
@@ -294,6 +302,23 @@ const std::vector<FilterOption>& FilterOptions()
       [](vtkFeaturePointDetector* f) { return Crease(f)->GetGrowThreshold(); },
       "hysteresis: a point with more than V of the votes joins the feature points it is "
       "connected to through such points (off at or above the threshold)" },
+    { "thin", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
+      [](vtkFeaturePointDetector* f, double) { Crease(f)->ThinFeaturesOn(); },
+      [](vtkFeaturePointDetector* f) { return double(Crease(f)->GetThinFeatures()); },
+      "one point wide: across each crease only the points nearest its fitted line, across each "
+      "border the outermost row (without it, a band about twice --band-width spacings wide)",
+      true },
+    { "no-borders", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
+      [](vtkFeaturePointDetector* f, double) { Crease(f)->BordersOff(); },
+      [](vtkFeaturePointDetector* f) { return double(!Crease(f)->GetBorders()); },
+      "open borders (a scan's edge, a hole, the edge of a sheet, the rim of a thin wall) are not "
+      "feature points (without it they are, of type border)", true },
+    { "single-scale", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
+      [](vtkFeaturePointDetector* f, double) { Crease(f)->MultiScaleOff(); },
+      [](vtkFeaturePointDetector* f) { return double(!Crease(f)->GetMultiScale()); },
+      "every fit and vote uses --crease-k neighbours (without it, where the hinge does not "
+      "explain a point's neighbourhood, that point's neighbourhood is halved, down to 20 points)",
+      true },
   };
   return options;
 }
@@ -451,7 +476,14 @@ void PrintHelp()
     {
       range = ", " + FormatNumber(o.Min) + " to " + (o.Max > 1e299 ? "any" : FormatNumber(o.Max));
     }
-    std::printf("  --%s %s\n", o.Name, o.Metavar);
+    if (o.Flag)
+    {
+      std::printf("  --%s\n", o.Name);
+    }
+    else
+    {
+      std::printf("  --%s %s\n", o.Name, o.Metavar);
+    }
     const auto defaults = DefaultText(o);
     PrintWrapped(std::string(o.Help) + " [" + defaults.first + range + defaults.second + "]" +
         (methods.empty() ? "" : "; " + methods),
@@ -884,6 +916,12 @@ Settings ParseArguments(int argc, char* argv[])
     }
     else if (const FilterOption* o = FindFilterOption(name))
     {
+      if (o->Flag)
+      {
+        noValue();
+        s.FilterValues.emplace_back(o, 1.0);
+        continue;
+      }
       const std::string v = takeValue();
       double number = 0.0;
       if (!o->Keywords.empty())
@@ -1144,6 +1182,24 @@ int main(int argc, char* argv[])
       static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n));
     std::printf("features    %lld (%.2f %%)\n", static_cast<long long>(features),
       100.0 * features / std::max<vtkIdType>(n, 1));
+    auto* types = method->FeatureTypes
+      ? vtkUnsignedCharArray::SafeDownCast(result->GetPointData()->GetArray("FeatureType"))
+      : nullptr;
+    if (types)
+    {
+      long long counts[5] = { 0, 0, 0, 0, 0 };
+      for (vtkIdType i = 0; i < types->GetNumberOfTuples(); ++i)
+      {
+        const unsigned char t = types->GetValue(i);
+        if (t < 5)
+        {
+          ++counts[t];
+        }
+      }
+      std::printf("types       convex %lld, concave %lld, corner %lld, border %lld\n",
+        counts[vtkCreaseVotingFeatures::CONVEX], counts[vtkCreaseVotingFeatures::CONCAVE],
+        counts[vtkCreaseVotingFeatures::CORNER], counts[vtkCreaseVotingFeatures::BORDER]);
+    }
     std::printf("output      %s%s\n", s.Output.c_str(), s.FeaturesOnly ? " (feature points only)" : "");
     if (!s.Screenshot.empty())
     {

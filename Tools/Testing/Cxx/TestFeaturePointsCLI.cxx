@@ -30,6 +30,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -162,9 +163,59 @@ vtkUnsignedCharArray* MaskOf(vtkPointSet* data)
               : nullptr;
 }
 
-// The CLI's mask read from `output` equals the filter's mask on the same file's cloud.
+// The FeatureType counts of a file written by the CLI: index 0 none, 1 convex, 2 concave, 3 corner,
+// 4 border (vtkCreaseVotingFeatures::FeatureTypes); all -1 when the file has no such array.
+std::vector<long> TypeCounts(const std::string& file)
+{
+  std::string error;
+  vtkSmartPointer<vtkPointSet> data = vtkPointCloudIO::Read(file, error);
+  auto* types = data
+    ? vtkUnsignedCharArray::SafeDownCast(data->GetPointData()->GetArray("FeatureType"))
+    : nullptr;
+  std::vector<long> counts(5, types ? 0 : -1);
+  for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
+  {
+    const unsigned char t = types->GetValue(i);
+    if (t < 5)
+    {
+      ++counts[t];
+    }
+  }
+  return counts;
+}
+
+// The counts of the summary's "types" line (convex, concave, corner, border at indices 1-4); empty
+// when there is no such line.
+std::vector<long> SummaryTypeCounts(const std::string& out)
+{
+  const size_t at = out.find("\ntypes       ");
+  long convex = 0, concave = 0, corner = 0, border = 0;
+  if (at == std::string::npos ||
+    std::sscanf(out.c_str() + at + 1, "types       convex %ld, concave %ld, corner %ld, border %ld",
+      &convex, &concave, &corner, &border) != 4)
+  {
+    return {};
+  }
+  return { 0, convex, concave, corner, border };
+}
+
+// The summary's "features" count; -1 when there is no such line.
+long SummaryFeatures(const std::string& out)
+{
+  const size_t at = out.find("\nfeatures    ");
+  long features = -1;
+  if (at == std::string::npos ||
+    std::sscanf(out.c_str() + at + 1, "features    %ld", &features) != 1)
+  {
+    return -1;
+  }
+  return features;
+}
+
+// The CLI's mask read from `output` equals the filter's mask on the same file's cloud, which has
+// more than `minimum` feature points.
 void CheckSameMask(const std::string& what, vtkFeaturePointDetector* filter,
-  const std::string& input, const std::string& output)
+  const std::string& input, const std::string& output, long minimum = 50)
 {
   std::string error;
   vtkSmartPointer<vtkPointSet> cloud = vtkPointCloudIO::Read(input, error);
@@ -187,7 +238,8 @@ void CheckSameMask(const std::string& what, vtkFeaturePointDetector* filter,
     features += expected->GetValue(i);
   }
   Check(differences == 0, what + ": " + std::to_string(differences) + " mask differences");
-  Check(features > 50, what + ": the cloud has feature points (" + std::to_string(features) + ")");
+  Check(features > minimum, what + ": the cloud has more than " + std::to_string(minimum) +
+      " feature points (" + std::to_string(features) + ")");
   std::printf("%s: %ld feature points of %lld, same mask as the library\n", what.c_str(), features,
     static_cast<long long>(expected->GetNumberOfTuples()));
 }
@@ -254,8 +306,9 @@ int main(int argc, char* argv[])
            "--threads", "--quiet", "--version", "--alpha", "--normal-k", "--ssi-k", "--density-k",
            "--center-k", "--ssi-center", "--gaussian-radius", "--voxel-filter", "--voxel-size",
            "--density-contrast", "--voxel-rule", "--threshold", "--threshold-sigmas", "--k",
-           "--crease-k", "--band-width", "--min-angle", "--grow-threshold", "crease", "huang2023",
-           "ssi", "pca", "wang-yuan", "[0.75", "[15, 3 to 1000]", "[150, 8 to 1000]",
+           "--crease-k", "--band-width", "--min-angle", "--grow-threshold", "--thin\n",
+           "--no-borders\n", "--single-scale\n", "[off]; crease", "FeatureType", "crease",
+           "huang2023", "ssi", "pca", "wang-yuan", "[0.75", "[15, 3 to 1000]", "[150, 8 to 1000]",
            "[automatic; crease: 0.5]", "(default: --method crease)", "--method NAME         "
            "the method (default crease)" })
     {
@@ -311,6 +364,109 @@ int main(int argc, char* argv[])
     filter6->SetThreshold(0.6);
     CheckSameMask("vtp -> vtp, crease --threshold 0.6", filter6, vtp, Path("crease-abs.vtp"));
   }
+  // Types: the summary counts the feature points of each FeatureType, as the written array does.
+  std::vector<long> defaultTypes;
+  long defaultFeatures = -1;
+  {
+    const Run run = Execute({ vtp, Path("types.vtp") });
+    Check(run.Code == 0, "crease, types line: " + run.Err);
+    defaultTypes = TypeCounts(Path("types.vtp"));
+    defaultFeatures = SummaryFeatures(run.Out);
+    const std::vector<long> line = SummaryTypeCounts(run.Out);
+    Check(!line.empty(), "crease summary has a types line: " + run.Out);
+    Check(defaultTypes[0] >= 0, "crease .vtp output has a FeatureType array");
+    Check(line.size() == 5 && defaultTypes[0] >= 0 &&
+        std::equal(line.begin() + 1, line.end(), defaultTypes.begin() + 1),
+      "types line counts the output's FeatureType array: " + run.Out);
+    Check(line.size() == 5 && line[1] + line[2] + line[3] + line[4] == defaultFeatures,
+      "types line adds up to the feature points: " + run.Out);
+    Check(run.Out.find("time (s)    read ") != std::string::npos &&
+        run.Out.find("\nextract (s) ") != std::string::npos,
+      "the time lines follow the types line: " + run.Out);
+    std::printf("default crease: %ld feature points; types convex %ld, concave %ld, corner %ld, "
+                "border %ld\n",
+      defaultFeatures, defaultTypes[1], defaultTypes[2], defaultTypes[3], defaultTypes[4]);
+  }
+  // --thin: one point wide, fewer feature points than the default band, the library's mask.
+  {
+    const Run run = Execute({ vtp, Path("thin.vtp"), "--thin" });
+    Check(run.Code == 0, "--thin: exit code " + std::to_string(run.Code) + ": " + run.Err);
+    const long thin = SummaryFeatures(run.Out);
+    Check(thin > 0 && defaultFeatures > 0 && thin < defaultFeatures,
+      "--thin gives fewer feature points (" + std::to_string(thin) + ") than the default (" +
+        std::to_string(defaultFeatures) + ")");
+    const std::vector<long> types = TypeCounts(Path("thin.vtp"));
+    Check(types[0] >= 0, "--thin: the .vtp output has a FeatureType array");
+    const std::vector<long> line = SummaryTypeCounts(run.Out);
+    Check(line.size() == 5 && std::equal(line.begin() + 1, line.end(), types.begin() + 1) &&
+        line[1] + line[2] + line[3] + line[4] == thin,
+      "--thin: types line counts the output's FeatureType array: " + run.Out);
+    vtkNew<vtkCreaseVotingFeatures> filter;
+    filter->ThinFeaturesOn();
+    CheckSameMask("vtp -> vtp, --thin", filter, vtp, Path("thin.vtp"));
+  }
+  // --single-scale, and the three flags together: the library's masks.
+  {
+    const Run run = Execute({ vtp, Path("single.vtp"), "--single-scale" });
+    Check(run.Code == 0, "--single-scale: " + run.Err);
+    vtkNew<vtkCreaseVotingFeatures> filter;
+    filter->MultiScaleOff();
+    CheckSameMask("vtp -> vtp, --single-scale", filter, vtp, Path("single.vtp"));
+    // The mask may not change on this cloud; the votes do: they are the single scale's.
+    vtkNew<vtkCreaseVotingFeatures> multi;
+    multi->SetInputData(filter->GetInput());
+    multi->Update();
+    vtkSmartPointer<vtkPointSet> written = vtkPointCloudIO::Read(Path("single.vtp"), error);
+    vtkDataArray* got = written ? written->GetPointData()->GetArray("CreaseVotes") : nullptr;
+    vtkDataArray* single = filter->GetOutput()->GetPointData()->GetArray("CreaseVotes");
+    vtkDataArray* scales = multi->GetOutput()->GetPointData()->GetArray("CreaseVotes");
+    long fromSingle = -1, fromMulti = -1;
+    if (got && single && scales && got->GetNumberOfTuples() == single->GetNumberOfTuples())
+    {
+      fromSingle = fromMulti = 0;
+      for (vtkIdType i = 0; i < got->GetNumberOfTuples(); ++i)
+      {
+        fromSingle += got->GetComponent(i, 0) != single->GetComponent(i, 0);
+        fromMulti += got->GetComponent(i, 0) != scales->GetComponent(i, 0);
+      }
+    }
+    Check(fromSingle == 0 && fromMulti > 0,
+      "--single-scale: CreaseVotes as the library's single scale (" + std::to_string(fromSingle) +
+        " differences), not as its default multi-scale (" + std::to_string(fromMulti) +
+        " differences)");
+    const Run all = Execute({ vtp, Path("flags.vtp"), "--thin", "--no-borders", "--single-scale" });
+    Check(all.Code == 0, "--thin --no-borders --single-scale: " + all.Err);
+    vtkNew<vtkCreaseVotingFeatures> flags;
+    flags->ThinFeaturesOn();
+    flags->BordersOff();
+    flags->MultiScaleOff();
+    CheckSameMask("vtp -> vtp, --thin --no-borders --single-scale", flags, vtp, Path("flags.vtp"));
+  }
+  // --no-borders on an open sheet: border points by default, none with it.
+  {
+    const std::string plate = Path("plate.vtp");
+    Check(vtkPointCloudIO::Write(ModelCloud(vtkFeatureModelSource::PLATE_WITH_HOLE, 20000), plate,
+            error),
+      "write plate.vtp: " + error);
+    const Run run = Execute({ plate, Path("plate-borders.vtp") });
+    Check(run.Code == 0, "open sheet, default: " + run.Err);
+    const std::vector<long> with = TypeCounts(Path("plate-borders.vtp"));
+    Check(with[4] > 0, "open sheet: border points by default (" + std::to_string(with[4]) + ")");
+    const Run off = Execute({ plate, Path("plate-no-borders.vtp"), "--no-borders" });
+    Check(off.Code == 0, "open sheet, --no-borders: " + off.Err);
+    const std::vector<long> without = TypeCounts(Path("plate-no-borders.vtp"));
+    Check(without[0] >= 0 && without[4] == 0,
+      "--no-borders: no BORDER type on an open sheet (" + std::to_string(without[4]) + ")");
+    const std::vector<long> line = SummaryTypeCounts(off.Out);
+    Check(line.size() == 5 && line[4] == 0, "--no-borders: types line says border 0: " + off.Out);
+    vtkNew<vtkCreaseVotingFeatures> filter;
+    filter->BordersOff();
+    // A flat sheet has no crease: without its borders it may have no feature point at all.
+    CheckSameMask("open sheet, --no-borders", filter, plate, Path("plate-no-borders.vtp"), -1);
+    std::printf("open sheet (plate with a hole): %ld border points by default, %ld with "
+                "--no-borders\n",
+      with[4], without[4]);
+  }
   // The paper's method, named: it was the default before crease.
   {
     const Run run = Execute({ vtp, Path("out.vtp"), "--method", "huang2023" });
@@ -319,6 +475,7 @@ int main(int argc, char* argv[])
         run.Out.find("candidates") != std::string::npos && run.Out.find("time (s)") != std::string::npos &&
         run.Out.find("method      huang2023") != std::string::npos,
       "summary lines: " + run.Out);
+    Check(run.Out.find("\ntypes ") == std::string::npos, "huang2023 has no types line: " + run.Out);
     vtkNew<vtkFeaturePointExtraction> filter;
     CheckSameMask("vtp -> vtp, --method huang2023", filter, vtp, Path("out.vtp"));
   }
@@ -395,6 +552,17 @@ int main(int argc, char* argv[])
   ExpectFailure("crease option, another method",
     { vtp, Path("o5.vtp"), "--method", "huang2023", "--band-width", "1" }, 2,
     "option --band-width does not apply to --method huang2023", Path("o5.vtp"));
+  ExpectFailure("crease flag, another method",
+    { vtp, Path("o5.vtp"), "--thin", "--method", "huang2023" }, 2,
+    "option --thin does not apply to --method huang2023", Path("o5.vtp"));
+  ExpectFailure("crease flag, another method (before it)",
+    { vtp, Path("o5.vtp"), "--method", "pca", "--no-borders" }, 2,
+    "option --no-borders does not apply to --method pca", Path("o5.vtp"));
+  ExpectFailure("crease flag, another method (--single-scale)",
+    { vtp, Path("o5.vtp"), "--method", "ssi", "--single-scale" }, 2,
+    "option --single-scale does not apply to --method ssi", Path("o5.vtp"));
+  ExpectFailure("flag with a value", { vtp, Path("o5.vtp"), "--thin=1" }, 2,
+    "option --thin takes no value", Path("o5.vtp"));
   ExpectFailure("absolute and automatic threshold",
     { vtp, Path("o5.vtp"), "--threshold", "0.5", "--threshold-sigmas", "3" }, 2,
     "options --threshold and --threshold-sigmas exclude each other", Path("o5.vtp"));
