@@ -48,8 +48,39 @@ constexpr int SheetLinks = 5;
 // failed where most points lie within a neighbourhood of a crease (features sampled denser, small
 // clouds): it was then a crease's gain, and the shallow creases fell below it.
 constexpr double MinimumGain = 1.0;
-// Neighbours through which the hysteresis step connects points.
+// Neighbours through which the hysteresis step connects points, and among which the thinning
+// compares points across a curve.
 constexpr int ConnectionNeighbors = 8;
+// The smallest neighbourhood of the scale per point (a hinge of 2 x 3 parameters through noise).
+constexpr int SmallestScale = 20;
+// A neighbourhood of SmallestScale points that neither one quadric nor one hinge explains within
+// DetailMisfit times the noise variance per degree of freedom holds more than two faces: a
+// corner, or faces narrower than the smallest scale (ribs, grooves). Such points are feature
+// points. For pure noise the residual per degree of freedom is a chi-square over 14: it exceeds
+// 3 with probability about 1e-4.
+constexpr double DetailMisfit = 3.0;
+constexpr double Pi = 3.14159265358979323846;
+// Borders: the point's BorderNeighbors nearest leave an empty sector wider than BorderGap in the
+// tangent plane. n random directions around an interior point leave a gap above 90 degrees with
+// probability about n (3/4)^(n-1): 4e-5 for n = 50, fifty times below the 2 per 1000 allowed on
+// smooth shapes. The strip between a point and the border holds points too, so the sector is
+// empty only for the outermost row, about 1-2 spacings wide whatever n (measured with 120
+// degrees: 93 % of the points within 1 s of the border, 60 % between 1 and 2 s); the band is
+// then the points within BandWidth d of that row. The gaps of a random sampling are not
+// independent: the rim of a void in the sampling shows a gap too (0.7 points per 1000 on a
+// noisy plane at 120 degrees). Such a rim is a small closed ring inside one neighbourhood, a
+// border a curve that runs on: connected border points (each linked to the border points among
+// its BorderNeighbors / 2 nearest) fewer than BorderNeighbors / 2 are dropped.
+constexpr int BorderNeighbors = 50;
+constexpr double BorderGap = 2.0 * Pi / 3.0;
+// Corners: the directions t of the feature points around a point spread, the middle eigenvalue
+// of the mean of t t^T above CornerSpread, over at least MinimumCornerDirections feature points.
+// Two curves at an angle theta holding shares f and 1 - f of the points give
+// (1 - sqrt(1 - 4 f (1 - f) sin^2 theta)) / 2: min(f, 1 - f) at 90 degrees, 0.25 for equal
+// shares at 60 degrees; three curves at right angles in equal shares 1/3; one curve bending
+// by +-a across the neighbourhood about a^2 / 3 (0.18 needs a bend of +-42 degrees).
+constexpr double CornerSpread = 0.18;
+constexpr int MinimumCornerDirections = 6;
 
 // Moments of a set of points: count, sum, sum of outer products (upper triangle). The points are
 // relative to the fitted point, a few spacings long, so the one-pass covariance loses nothing.
@@ -106,6 +137,58 @@ bool FitPlane(const Moments& m, Eigen::Vector3d& centroid, Eigen::Vector3d& norm
   return true;
 }
 
+// Residual of the least-squares quadric height field h = a u^2 + b uv + c v^2 + d u + e v + f
+// over the plane (c, n) (u, v along the plane, h along n): what a smooth surface explains. A
+// crease is a bend that no smooth surface of the neighbourhood's size explains; a cylinder or a
+// sphere is explained by it however strongly curved. Falls back on `planeRss` when singular.
+double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& c,
+  const Eigen::Vector3d& n, double planeRss)
+{
+  const Eigen::Vector3d e1 = n.unitOrthogonal();
+  const Eigen::Vector3d e2 = n.cross(e1);
+  double radius = 0.0;
+  for (const Eigen::Vector3d& q : p)
+  {
+    radius = std::max(radius, (q - c).norm());
+  }
+  if (!(radius > 0.0))
+  {
+    return planeRss;
+  }
+  // Coordinates in units of the neighbourhood's radius: the normal equations stay conditioned.
+  auto row = [&](const Eigen::Vector3d& q, double& h) {
+    const Eigen::Vector3d w = (q - c) / radius;
+    const double u = w.dot(e1), v = w.dot(e2);
+    h = w.dot(n);
+    Eigen::Matrix<double, 6, 1> a;
+    a << u * u, u * v, v * v, u, v, 1.0;
+    return a;
+  };
+  Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> ath = Eigen::Matrix<double, 6, 1>::Zero();
+  double h = 0.0;
+  for (const Eigen::Vector3d& q : p)
+  {
+    const Eigen::Matrix<double, 6, 1> a = row(q, h);
+    ata.selfadjointView<Eigen::Lower>().rankUpdate(a);
+    ath += h * a;
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(ata.selfadjointView<Eigen::Lower>());
+  if (solver.info() != Eigen::Success || !(solver.vectorD().minCoeff() > 1e-12 * p.size()))
+  {
+    return planeRss;
+  }
+  const Eigen::Matrix<double, 6, 1> x = solver.solve(ath);
+  double rss = 0.0;
+  for (const Eigen::Vector3d& q : p)
+  {
+    const double r = row(q, h).dot(x) - h;
+    rss += r * r;
+  }
+  rss *= radius * radius;
+  return std::isfinite(rss) ? std::min(rss, planeRss) : planeRss;
+}
+
 // One two-plane model of a neighbourhood: its residual and the line where its planes meet.
 struct CreaseLine
 {
@@ -114,15 +197,20 @@ struct CreaseLine
   bool HasLine = false;
   float LinePoint[3] = { 0.0f, 0.0f, 0.0f }; // relative to the point
   float LineDirection[3] = { 0.0f, 0.0f, 0.0f };
+  // The planes' centroids lie on the inner side of the line (against the fitted point's normal):
+  // a convex crease. False for a concave one.
+  bool Convex = true;
 };
 
 struct CreaseFit
 {
   double RSS1 = 0.0; // residual of one plane
+  double RSSQ = 0.0; // residual of one smooth quadric height field over that plane
   CreaseLine Hinge;  // two half-planes, points split by the side of the line they lie on
   CreaseLine Cross;  // two whole planes, points split by the nearer plane
   int Points = 0;    // points fitted
   int Sheet = -1;    // two parallel sheets (a thin wall): the fitted point's sheet (0, 1)
+  bool Explained = true; // a quadric or the hinge explains the points within the noise
 };
 
 // The line where the planes (ca, na) and (cb, nb) meet: its point nearest the origin x, its unit
@@ -147,9 +235,14 @@ bool MeetingLine(const Eigen::Vector3d& ca, const Eigen::Vector3d& na, const Eig
 }
 
 void StoreLine(CreaseLine& line, double rss2, double sine, bool hasLine, const Eigen::Vector3d& x,
-  const Eigen::Vector3d& t)
+  const Eigen::Vector3d& t, const Eigen::Vector3d& ca, const Eigen::Vector3d& cb,
+  const Eigen::Vector3d& normal)
 {
   line.RSS2 = rss2;
+  // Convex when the faces fall away from the line on the inner side of the point's normal.
+  Eigen::Vector3d inward = 0.5 * (ca + cb) - x;
+  inward -= inward.dot(t) * t;
+  line.Convex = !hasLine || inward.dot(normal) <= 0.0;
   line.Angle = static_cast<float>(std::asin(std::min(sine, 1.0)) * 180.0 / 3.14159265358979323846);
   line.HasLine = hasLine;
   for (int c = 0; c < 3; ++c)
@@ -237,6 +330,7 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
     side[1] = nextSide[1];
   }
   fit.RSS1 = rss1;
+  fit.RSSQ = FitQuadric(p, c1, n1, rss1);
   if (!fitted)
   {
     fit.Hinge.RSS2 = fit.Cross.RSS2 = rss1;
@@ -257,7 +351,7 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   Eigen::Vector3d t, x;
   double sine = 0.0;
   bool hasLine = MeetingLine(ca, na, cb, nb, x, t, sine);
-  StoreLine(fit.Cross, rss2, sine, hasLine, x, t);
+  StoreLine(fit.Cross, rss2, sine, hasLine, x, t, ca, cb, nr[0]);
   // The nearest-plane assignment fits noise too: each point picks the plane nearer to it, so on a
   // flat noisy patch two planes "gain" a large share of the residual, and a shallow crease hides
   // in that. The hinge model is fitted on a partition by position instead: each point goes to the
@@ -287,7 +381,7 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
     rss2 = qa + qb;
     hasLine = MeetingLine(ca, na, cb, nb, x, t, sine);
   }
-  StoreLine(fit.Hinge, rss2, sine, hasLine, x, t);
+  StoreLine(fit.Hinge, rss2, sine, hasLine, x, t, ca, cb, nr[0]);
   return fit;
 }
 
@@ -372,6 +466,706 @@ struct Scratch
   std::vector<unsigned char> Label, Next;
   SheetReach Sheet;
 };
+
+double Median(std::vector<double>& v)
+{
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  auto middle = v.begin() + v.size() / 2;
+  std::nth_element(v.begin(), middle, v.end());
+  return *middle;
+}
+
+// Everything one run of the detector shares between its stages: the neighbour table (renumbered
+// cloud, one row of k nearest per scored point), the fits, and the output arrays' storage. Each
+// stage is one member function; RequestData calls them in order.
+struct CreaseRun
+{
+  const featurepoints::PointReader& Reader;
+  const std::vector<vtkIdType>& Ids;
+  const std::vector<int32_t>& Table;
+  const int K;       // width of a table row
+  const int KFit;    // the widest fit (NumberOfNeighbors)
+  const double D;    // mean spacing
+  const vtkIdType N; // points
+  vtkIdType Rows = 0;
+  std::vector<vtkIdType> RowOf;
+  // One bit per neighbour (and the point) of each row: on the point's sheet.
+  size_t Words = 0;
+  std::vector<uint64_t> Sheets;
+  std::vector<CreaseFit> Fits;
+  // Per row: how many of the row's sheet members the chosen fit and the vote use (the point's
+  // scale), and the model's gain in noise variances.
+  std::vector<int32_t> Scale;
+  std::vector<double> Gain;
+  double Variance = 0.0;
+
+  CreaseRun(const featurepoints::PointReader& reader, const std::vector<vtkIdType>& ids,
+    const std::vector<int32_t>& table, int k, int kfit, double d, vtkIdType n)
+    : Reader(reader)
+    , Ids(ids)
+    , Table(table)
+    , K(k)
+    , KFit(kfit)
+    , D(d)
+    , N(n)
+  {
+    this->Rows = static_cast<vtkIdType>(ids.size());
+    this->RowOf.assign(static_cast<size_t>(n), -1);
+    for (vtkIdType r = 0; r < this->Rows; ++r)
+    {
+      this->RowOf[ids[r]] = r;
+    }
+    this->Words = (static_cast<size_t>(kfit) + 1 + 63) / 64;
+  }
+
+  const int32_t* Row(vtkIdType r) const { return this->Table.data() + r * this->K; }
+  const uint64_t* Sheet(vtkIdType r) const { return this->Sheets.data() + r * this->Words; }
+
+  // Step 1a: PCA normals of the `kn` nearest, turned away from the cloud's centre, and sigma^2:
+  // the median over the cloud of their quadric's residual per degree of freedom.
+  void ComputeNormals(int kn, const double center[3], float* normal);
+  // Steps 1b-3 at the widest scale: the sheet of every point, its two-plane fit.
+  void FitCreases(const float* normal);
+  // Scale per point: where the widest hinge does not explain the neighbourhood, the largest
+  // smaller scale whose hinge does. Sets detail[id] where not even the smallest is explained.
+  void ChooseScales(const float* normal, int smallest, unsigned char* detail);
+  // The model of each fit (hinge or crossing planes) and its gain.
+  void ChooseModels(float* gain, float* angle);
+  // Step 4: the vote fraction of every point.
+  void CastVotes(double minAngle, double bandWidth, float* vote) const;
+  // Step 6: hysteresis growth of the mask through points voting above growAt.
+  vtkIdType Grow(const float* vote, double growAt, unsigned char* mask) const;
+  // Open borders: an empty sector of the tangent plane. Sets border[id] and its outward
+  // direction (unit, in the tangent plane) in `outward`.
+  void FindBorders(int kb, unsigned char* border, float* outward) const;
+  // Drops the connected sets of border points smaller than `shortest` (rims of sampling voids).
+  void DropShortBorders(int shortest, unsigned char* border) const;
+  // The border band: points within bandWidth d of a border point (among their kb nearest)
+  // join it, as the crease band does.
+  void WidenBorders(int kb, double bandWidth, unsigned char* border) const;
+  // FeatureType of the mask's points.
+  void ClassifyFeatures(const unsigned char* mask, const unsigned char* border,
+    const float* outward, const float* normal, int kc, unsigned char* type) const;
+  // One point wide: keeps, across each feature curve, the points nearest the fitted line
+  // (creases) or furthest out (borders).
+  vtkIdType Thin(const unsigned char* type, const float* outward, int kt, unsigned char* mask) const;
+
+private:
+  // The members of row r's sheet, nearest first, at most `count` of them besides the point,
+  // as coordinates relative to the point (P[0] = 0) with their normals.
+  void GatherSheet(vtkIdType r, int count, const float* normal, Scratch& s) const;
+  // Distance from a point at offset v of the fitted point to row r's line.
+  double LineDistance(vtkIdType r, const double v[3]) const;
+  // The crease direction of a feature point: its fit's line, or along its border.
+  bool Direction(vtkIdType id, const unsigned char* type, const float* outward,
+    const float* normal, double t[3]) const;
+};
+
+void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
+{
+  std::vector<double> residual(static_cast<size_t>(this->Rows), 0.0);
+  vtkSMPThreadLocal<std::vector<double>> normalScratch;
+  vtkSMPThreadLocal<std::vector<Eigen::Vector3d>> pointScratch;
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<double>& q = normalScratch.Local();
+    std::vector<Eigen::Vector3d>& p = pointScratch.Local();
+    q.resize(3 * static_cast<size_t>(kn));
+    double x[3], lambda[3], nrm[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      const int32_t* row = this->Row(r);
+      const int count = featurepoints::RowLength(row, kn);
+      featurepoints::GatherRelative(this->Reader, id, row, count, q.data(), x);
+      const double away[3] = { x[0] - center[0], x[1] - center[1], x[2] - center[2] };
+      featurepoints::LocalPCA(q.data(), count, true, away, lambda, nrm);
+      for (int c = 0; c < 3; ++c)
+      {
+        normal[3 * id + c] = static_cast<float>(nrm[c]);
+      }
+      // The noise: what a smooth surface leaves of the smallest neighbourhood. Curvature is
+      // explained by the quadric, and creases touch few points: the median is the noise.
+      p.assign(1, Eigen::Vector3d::Zero());
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int j = 0; j < count; ++j)
+      {
+        p.emplace_back(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+        mean += p.back();
+      }
+      const int points = count + 1;
+      if (points > 6)
+      {
+        mean /= points;
+        const Eigen::Vector3d n(nrm[0], nrm[1], nrm[2]);
+        const double planeRss = points * lambda[0];
+        residual[r] = FitQuadric(p, mean, n, planeRss) / (points - 6);
+      }
+    }
+  });
+  this->Variance =
+    std::max(Median(residual), NoiseFloor * NoiseFloor * this->D * this->D);
+}
+
+void CreaseRun::GatherSheet(vtkIdType r, int count, const float* normal, Scratch& s) const
+{
+  const vtkIdType id = this->Ids[r];
+  const int32_t* row = this->Row(r);
+  const int length = featurepoints::RowLength(row, this->KFit);
+  const uint64_t* sheet = this->Sheet(r);
+  double x[3], y[3];
+  this->Reader.Get(id, x);
+  s.P.resize(1);
+  s.N.resize(1);
+  s.P[0].setZero();
+  s.N[0] = Eigen::Vector3d(normal[3 * id], normal[3 * id + 1], normal[3 * id + 2]);
+  for (int j = 0; j < length && static_cast<int>(s.P.size()) <= count; ++j)
+  {
+    if (!Reached(sheet, j + 1))
+    {
+      continue;
+    }
+    this->Reader.Get(row[j], y);
+    s.P.emplace_back(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+    const float* nj = normal + 3 * static_cast<vtkIdType>(row[j]);
+    s.N.emplace_back(nj[0], nj[1], nj[2]);
+  }
+}
+
+// Two-plane fit of the gathered points; where they form two parallel sheets (a thin wall), the
+// fit is redone on the fitted point's sheet.
+CreaseFit FitGathered(Scratch& s)
+{
+  CreaseFit fit = FitCrease(s.P, s.N, s.Label, s.Next);
+  if (fit.Sheet >= 0)
+  {
+    const unsigned char side = static_cast<unsigned char>(fit.Sheet);
+    size_t kept = 0;
+    for (size_t j = 0; j < s.P.size(); ++j)
+    {
+      if (j == 0 || s.Label[j] == side)
+      {
+        s.P[kept] = s.P[j];
+        s.N[kept] = s.N[j];
+        ++kept;
+      }
+    }
+    s.P.resize(kept);
+    s.N.resize(kept);
+    fit = FitCrease(s.P, s.N, s.Label, s.Next);
+    fit.Sheet = -1;
+  }
+  return fit;
+}
+
+void CreaseRun::FitCreases(const float* normal)
+{
+  this->Fits.assign(static_cast<size_t>(this->Rows), CreaseFit());
+  this->Sheets.assign(static_cast<size_t>(this->Rows) * this->Words, 0);
+  this->Scale.assign(static_cast<size_t>(this->Rows), this->KFit);
+  vtkSMPThreadLocal<Scratch> scratch;
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    Scratch& s = scratch.Local();
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const int32_t* row = this->Row(r);
+      const int count = featurepoints::RowLength(row, this->KFit);
+      uint64_t* sheet = this->Sheets.data() + r * this->Words;
+      // Every neighbour when the sheet holds fewer than 8 points (an isolated point), so that
+      // the fit has something to work on.
+      if (s.Sheet.Reach(this->Ids[r], row, count, this->Table.data(), this->K, this->RowOf,
+            sheet) < 8)
+      {
+        std::fill(sheet, sheet + this->Words, ~uint64_t(0));
+      }
+      this->GatherSheet(r, this->KFit, normal, s);
+      this->Fits[r] = FitGathered(s);
+    }
+  });
+}
+
+// Whether one smooth surface or one hinge explains the points within the noise.
+inline bool Explains(const CreaseFit& f, double variance)
+{
+  return std::min(f.RSSQ, f.Hinge.RSS2) <= HingeMisfit * std::max(f.Points - 6, 0) * variance;
+}
+
+void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* detail)
+{
+  vtkSMPThreadLocal<Scratch> scratch;
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    Scratch& s = scratch.Local();
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      if (Explains(this->Fits[r], this->Variance))
+      {
+        continue;
+      }
+      // Halve the neighbourhood until its hinge explains it: features closer together than
+      // the widest neighbourhood (grooves, small faces, detailed parts) each get a fit of
+      // their own.
+      CreaseFit fit;
+      for (int scale = this->KFit / 2; scale >= smallest; scale /= 2)
+      {
+        this->GatherSheet(r, scale, normal, s);
+        fit = FitGathered(s);
+        if (Explains(fit, this->Variance))
+        {
+          this->Fits[r] = fit;
+          this->Scale[r] = scale;
+          break;
+        }
+      }
+      const double dof = std::max(fit.Points - 6, 0);
+      if (this->Scale[r] == this->KFit && fit.Points > 0 &&
+        std::min(fit.RSSQ, fit.Hinge.RSS2) > DetailMisfit * dof * this->Variance)
+      {
+        detail[this->Ids[r]] = 1;
+      }
+    }
+  });
+}
+
+void CreaseRun::ChooseModels(float* gain, float* angle)
+{
+  this->Gain.resize(static_cast<size_t>(this->Rows));
+  // Model choice: the hinge, unless it leaves more than HingeMisfit times the noise (surfaces
+  // crossing, corners, strongly curved patches); then the crossing planes, as fitted. The chosen
+  // model replaces the hinge in place: from here on Fits[r].Hinge is the fit that votes.
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    CreaseFit& f = this->Fits[r];
+    f.Explained = Explains(f, this->Variance);
+    if (!f.Explained)
+    {
+      f.Hinge = f.Cross;
+    }
+    this->Gain[r] = std::max(f.RSSQ - f.Hinge.RSS2, 0.0) / this->Variance;
+    gain[this->Ids[r]] = static_cast<float>(this->Gain[r]);
+    angle[this->Ids[r]] = f.Hinge.Angle;
+  }
+}
+
+double CreaseRun::LineDistance(vtkIdType r, const double v[3]) const
+{
+  const CreaseLine& f = this->Fits[r].Hinge;
+  double w[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    w[c] = v[c] - f.LinePoint[c];
+  }
+  const double along =
+    w[0] * f.LineDirection[0] + w[1] * f.LineDirection[1] + w[2] * f.LineDirection[2];
+  return std::sqrt(std::max(w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - along * along, 0.0));
+}
+
+void CreaseRun::CastVotes(double minAngle, double bandWidth, float* vote) const
+{
+  const double band = bandWidth * this->D;
+  // One byte per point says whether its fit may vote, so that the vote reads only voters' fits.
+  std::vector<unsigned char> voter(static_cast<size_t>(this->N), 0);
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const CreaseLine& f = this->Fits[r].Hinge;
+      voter[this->Ids[r]] =
+        f.HasLine && this->Gain[r] > MinimumGain && !(f.Angle < minAngle) ? 1 : 0;
+    }
+  });
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    double x[3], y[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      const int32_t* row = this->Row(r);
+      const int count = featurepoints::RowLength(row, this->KFit);
+      this->Reader.Get(id, x);
+      // The members of the point's sheet within its scale vote; the fraction is of them.
+      const uint64_t* sheet = this->Sheet(r);
+      int members = 0, in = 0;
+      for (int j = -1; j < count && members <= this->Scale[r]; ++j)
+      {
+        if (!Reached(sheet, j + 1))
+        {
+          continue;
+        }
+        ++members;
+        const vtkIdType other = j < 0 ? id : static_cast<vtkIdType>(row[j]);
+        if (!voter[other])
+        {
+          continue;
+        }
+        this->Reader.Get(other, y);
+        const double v[3] = { x[0] - y[0], x[1] - y[1], x[2] - y[2] };
+        if (this->LineDistance(this->RowOf[other], v) <= band)
+        {
+          ++in;
+        }
+      }
+      vote[id] = static_cast<float>(in) / static_cast<float>(members);
+    }
+  });
+}
+
+vtkIdType CreaseRun::Grow(const float* vote, double growAt, unsigned char* m) const
+{
+  // The result is a set of connected components, so it does not depend on the visiting order.
+  vtkIdType added = 0;
+  std::vector<vtkIdType> stack;
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    if (m[this->Ids[r]])
+    {
+      stack.push_back(r);
+    }
+  }
+  const int kc = std::min(ConnectionNeighbors, this->K);
+  while (!stack.empty())
+  {
+    const vtkIdType r = stack.back();
+    stack.pop_back();
+    const int32_t* row = this->Row(r);
+    for (int j = 0; j < kc && row[j] >= 0; ++j)
+    {
+      const vtkIdType other = row[j];
+      if (!m[other] && vote[other] > growAt)
+      {
+        m[other] = 1;
+        ++added;
+        stack.push_back(this->RowOf[other]);
+      }
+    }
+  }
+  return added;
+}
+
+void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
+{
+  vtkSMPThreadLocal<std::vector<double>> scratch;
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<double>& q = scratch.Local();
+    double x[3], y[3], lambda[3], nrm[3];
+    const double none[3] = { 0.0, 0.0, 0.0 };
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      const int32_t* row = this->Row(r);
+      const int length = featurepoints::RowLength(row, this->KFit);
+      const uint64_t* sheet = this->Sheet(r);
+      // The point's kb nearest on its own sheet: on a thin wall (both sides one sheet) they
+      // fold back on each other at the rim, which then shows as a border too.
+      q.clear();
+      this->Reader.Get(id, x);
+      for (int j = 0; j < length && static_cast<int>(q.size()) < 3 * kb; ++j)
+      {
+        if (Reached(sheet, j + 1))
+        {
+          this->Reader.Get(row[j], y);
+          q.insert(q.end(), { y[0] - x[0], y[1] - x[1], y[2] - x[2] });
+        }
+      }
+      const int count = static_cast<int>(q.size() / 3);
+      if (count < kb || !featurepoints::LocalPCA(q.data(), count, true, none, lambda, nrm))
+      {
+        continue;
+      }
+      // Angles of the neighbours in the tangent plane, and the widest empty sector.
+      const Eigen::Vector3d n(nrm[0], nrm[1], nrm[2]);
+      const Eigen::Vector3d e1 = n.unitOrthogonal();
+      const Eigen::Vector3d e2 = n.cross(e1);
+      std::vector<double> angles;
+      angles.reserve(static_cast<size_t>(count));
+      for (int j = 0; j < count; ++j)
+      {
+        const Eigen::Vector3d v(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+        const double a = v.dot(e1), b = v.dot(e2);
+        if (a != 0.0 || b != 0.0)
+        {
+          angles.push_back(std::atan2(b, a));
+        }
+      }
+      if (angles.size() < 3)
+      {
+        continue;
+      }
+      std::sort(angles.begin(), angles.end());
+      double widest = angles.front() + 2.0 * Pi - angles.back();
+      double middle = angles.back() + 0.5 * widest;
+      for (size_t j = 1; j < angles.size(); ++j)
+      {
+        const double gap = angles[j] - angles[j - 1];
+        if (gap > widest)
+        {
+          widest = gap;
+          middle = angles[j - 1] + 0.5 * gap;
+        }
+      }
+      if (widest > BorderGap)
+      {
+        border[id] = 1;
+        const Eigen::Vector3d u = std::cos(middle) * e1 + std::sin(middle) * e2;
+        for (int c = 0; c < 3; ++c)
+        {
+          outward[3 * id + c] = static_cast<float>(u[c]);
+        }
+      }
+    }
+  });
+  this->DropShortBorders(kb / 2, border);
+}
+
+void CreaseRun::DropShortBorders(int shortest, unsigned char* border) const
+{
+  // Connected components of the border points, each point linked to the border points among its
+  // `shortest` nearest (either way round: a component is a set, whatever the visiting order).
+  std::vector<unsigned char> seen(static_cast<size_t>(this->N), 0);
+  std::vector<vtkIdType> component, stack;
+  const int kc = std::min(shortest, this->K);
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    const vtkIdType start = this->Ids[r];
+    if (!border[start] || seen[start])
+    {
+      continue;
+    }
+    component.clear();
+    stack.assign(1, start);
+    seen[start] = 1;
+    while (!stack.empty())
+    {
+      const vtkIdType id = stack.back();
+      stack.pop_back();
+      component.push_back(id);
+      const int32_t* row = this->Row(this->RowOf[id]);
+      for (int j = 0; j < kc && row[j] >= 0; ++j)
+      {
+        if (border[row[j]] && !seen[row[j]])
+        {
+          seen[row[j]] = 1;
+          stack.push_back(row[j]);
+        }
+      }
+    }
+    if (static_cast<int>(component.size()) < shortest)
+    {
+      for (vtkIdType id : component)
+      {
+        border[id] = 0;
+      }
+    }
+  }
+}
+
+void CreaseRun::WidenBorders(int kb, double bandWidth, unsigned char* border) const
+{
+  const double band2 = bandWidth * this->D * bandWidth * this->D;
+  std::vector<unsigned char> near(static_cast<size_t>(this->N), 0);
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    double x[3], y[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      if (border[id])
+      {
+        continue;
+      }
+      const int32_t* row = this->Row(r);
+      const int length = featurepoints::RowLength(row, std::min(kb, this->K));
+      const uint64_t* sheet = this->Sheet(r);
+      this->Reader.Get(id, x);
+      for (int j = 0; j < length; ++j)
+      {
+        if (!border[row[j]] || !Reached(sheet, j + 1))
+        {
+          continue;
+        }
+        this->Reader.Get(row[j], y);
+        const double v[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
+        if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= band2)
+        {
+          near[id] = 1;
+          break;
+        }
+      }
+    }
+  });
+  for (vtkIdType id : this->Ids)
+  {
+    border[id] = border[id] || near[id];
+  }
+}
+
+bool CreaseRun::Direction(vtkIdType id, const unsigned char* type, const float* outward,
+  const float* normal, double t[3]) const
+{
+  if (type[id] == vtkCreaseVotingFeatures::BORDER)
+  {
+    // Along the border: normal x outward.
+    const float* u = outward + 3 * id;
+    const float* n = normal + 3 * id;
+    t[0] = n[1] * u[2] - n[2] * u[1];
+    t[1] = n[2] * u[0] - n[0] * u[2];
+    t[2] = n[0] * u[1] - n[1] * u[0];
+    return true;
+  }
+  // Only a line that explains its neighbourhood gives a direction: the crossing planes of a
+  // corner run anywhere.
+  const CreaseFit& fit = this->Fits[this->RowOf[id]];
+  for (int c = 0; c < 3; ++c)
+  {
+    t[c] = fit.Hinge.LineDirection[c];
+  }
+  return fit.Hinge.HasLine && fit.Explained;
+}
+
+void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char* border,
+  const float* outward, const float* normal, int kc, unsigned char* type) const
+{
+  // Creases and borders first: a border point is a border; a crease point is typed by its fit.
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    const vtkIdType id = this->Ids[r];
+    if (mask[id])
+    {
+      type[id] = border[id]        ? vtkCreaseVotingFeatures::BORDER
+        : this->Fits[r].Hinge.Convex ? vtkCreaseVotingFeatures::CONVEX
+                                     : vtkCreaseVotingFeatures::CONCAVE;
+    }
+  }
+  // Corners: the feature points among the kc nearest on the sheet run in more than one
+  // direction (see CornerSpread).
+  std::vector<unsigned char> corner(static_cast<size_t>(this->N), 0);
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      if (!mask[id])
+      {
+        continue;
+      }
+      const int32_t* row = this->Row(r);
+      const int length = featurepoints::RowLength(row, this->KFit);
+      const uint64_t* sheet = this->Sheet(r);
+      Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+      int directions = 0, seen = 0;
+      for (int j = -1; j < length && seen < kc; ++j)
+      {
+        if (!Reached(sheet, j + 1))
+        {
+          continue;
+        }
+        ++seen;
+        const vtkIdType other = j < 0 ? id : static_cast<vtkIdType>(row[j]);
+        double t[3];
+        if (mask[other] && this->Direction(other, type, outward, normal, t))
+        {
+          const Eigen::Vector3d v(t[0], t[1], t[2]);
+          spread += v * v.transpose();
+          ++directions;
+        }
+      }
+      if (directions < MinimumCornerDirections)
+      {
+        continue;
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+      solver.computeDirect(spread / directions);
+      corner[id] = solver.eigenvalues()[1] > CornerSpread ? 1 : 0;
+    }
+  });
+  for (vtkIdType id : this->Ids)
+  {
+    if (corner[id])
+    {
+      type[id] = vtkCreaseVotingFeatures::CORNER;
+    }
+  }
+}
+
+vtkIdType CreaseRun::Thin(
+  const unsigned char* type, const float* outward, int kt, unsigned char* mask) const
+{
+  std::vector<unsigned char> keep(static_cast<size_t>(this->N), 0);
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    double x[3], y[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      if (!mask[id])
+      {
+        continue;
+      }
+      const int32_t* row = this->Row(r);
+      const int count = featurepoints::RowLength(row, std::min(kt, this->K));
+      this->Reader.Get(id, x);
+      const bool isBorder = type[id] == vtkCreaseVotingFeatures::BORDER;
+      const CreaseLine& f = this->Fits[r].Hinge;
+      if (!isBorder && !f.HasLine)
+      {
+        keep[id] = 1;
+        continue;
+      }
+      const double zero[3] = { 0.0, 0.0, 0.0 };
+      const double own = isBorder ? 0.0 : this->LineDistance(r, zero);
+      // Direction along the curve: the crease line, or along the border.
+      double t[3];
+      const float* u = outward + 3 * id;
+      if (isBorder)
+      {
+        // Any unit vector orthogonal to the outward direction within the neighbours' plane
+        // is along the border; the test below only needs "mostly across".
+        t[0] = t[1] = t[2] = 0.0;
+      }
+      else
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          t[c] = f.LineDirection[c];
+        }
+      }
+      bool kept = true;
+      for (int j = 0; j < count && kept; ++j)
+      {
+        const vtkIdType other = row[j];
+        if (!mask[other] || (type[other] == vtkCreaseVotingFeatures::BORDER) != isBorder)
+        {
+          continue;
+        }
+        this->Reader.Get(other, y);
+        const double v[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
+        if (isBorder)
+        {
+          // A border neighbour further out, more across the border than along it.
+          const double out = v[0] * u[0] + v[1] * u[1] + v[2] * u[2];
+          const double length2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+          kept = !(out > 0.0 && out * out >= 0.5 * length2);
+        }
+        else
+        {
+          // A neighbour across the line (more across than along) that lies nearer to it.
+          const double along = v[0] * t[0] + v[1] * t[1] + v[2] * t[2];
+          const double length2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+          if (along * along <= 0.5 * length2)
+          {
+            const double theirs = this->LineDistance(r, v);
+            kept = !(theirs < own || (theirs == own && other < id));
+          }
+        }
+      }
+      keep[id] = kept ? 1 : 0;
+    }
+  });
+  vtkIdType count = 0;
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    const vtkIdType id = this->Ids[r];
+    mask[id] = keep[id];
+    count += keep[id];
+  }
+  return count;
+}
 } // namespace
 
 vtkCreaseVotingFeatures::vtkCreaseVotingFeatures()
@@ -400,10 +1194,13 @@ int vtkCreaseVotingFeatures::RequestData(
   auto votes = featurepoints::NewZeroArray<vtkFloatArray>("CreaseVotes", 1, n);
   auto gains = featurepoints::NewZeroArray<vtkFloatArray>("CreaseGain", 1, n);
   auto angles = featurepoints::NewZeroArray<vtkFloatArray>("CreaseAngle", 1, n);
+  auto types = featurepoints::NewZeroArray<vtkUnsignedCharArray>("FeatureType", 1, n);
   auto mask = featurepoints::NewZeroArray<vtkUnsignedCharArray>("FeatureMask", 1, n);
   auto finish = [&]() {
     return this->AssembleOutput(input, output,
-      { normals.GetPointer(), votes.GetPointer(), gains.GetPointer(), angles.GetPointer() }, mask);
+      { normals.GetPointer(), votes.GetPointer(), gains.GetPointer(), angles.GetPointer(),
+        types.GetPointer() },
+      mask);
   };
 
   const int k = std::max(this->NumberOfNeighbors, this->NormalNeighbors);
@@ -415,231 +1212,80 @@ int vtkCreaseVotingFeatures::RequestData(
     return finish();
   }
   const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
-  const double d = this->MeanSpacing;
-  const vtkIdType rows = static_cast<vtkIdType>(ids.size());
-  std::vector<vtkIdType> rowOf(n, -1);
-  for (vtkIdType r = 0; r < rows; ++r)
-  {
-    rowOf[ids[r]] = r;
-  }
-
-  // Step 1a: PCA normals.
-  this->BeginStage("normals");
-  const double* center = neighborhoods->GetCenter();
+  CreaseRun run(reader, ids, table, k, this->NumberOfNeighbors, this->MeanSpacing, n);
   float* normal = normals->GetPointer(0);
-  const int kn = this->NormalNeighbors;
-  vtkSMPThreadLocal<std::vector<double>> normalScratch;
-  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
-    std::vector<double>& q = normalScratch.Local();
-    q.resize(3 * static_cast<size_t>(kn));
-    double x[3], lambda[3], nrm[3];
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const vtkIdType id = ids[r];
-      const int32_t* row = table.data() + r * k;
-      const int count = featurepoints::RowLength(row, kn);
-      featurepoints::GatherRelative(reader, id, row, count, q.data(), x);
-      const double outward[3] = { x[0] - center[0], x[1] - center[1], x[2] - center[2] };
-      featurepoints::LocalPCA(q.data(), count, true, outward, lambda, nrm);
-      for (int c = 0; c < 3; ++c)
-      {
-        normal[3 * id + c] = static_cast<float>(nrm[c]);
-      }
-    }
-  });
+  float* vote = votes->GetPointer(0);
+  unsigned char* m = mask->GetPointer(0);
+
+  this->BeginStage("normals");
+  run.ComputeNormals(this->NormalNeighbors, neighborhoods->GetCenter(), normal);
   this->UpdateProgress(0.5);
 
-  // Steps 1b-3: two-plane fits.
   this->BeginStage("crease fits");
-  const int kf = this->NumberOfNeighbors;
-  std::vector<CreaseFit> fits(static_cast<size_t>(rows));
-  vtkSMPThreadLocal<Scratch> scratch;
-  // One bit per neighbour (and the point): on the point's sheet. Every neighbour when the sheet
-  // holds fewer than 8 points (an isolated point), so that the fit has something to work on.
-  const size_t words = (static_cast<size_t>(kf) + 1 + 63) / 64;
-  std::vector<uint64_t> sheets(static_cast<size_t>(rows) * words, 0);
-  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
-    Scratch& s = scratch.Local();
-    s.Q.resize(3 * static_cast<size_t>(kf));
-    double x[3];
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const vtkIdType id = ids[r];
-      const int32_t* row = table.data() + r * k;
-      const int count = featurepoints::RowLength(row, kf);
-      featurepoints::GatherRelative(reader, id, row, count, s.Q.data(), x);
-      uint64_t* sheet = sheets.data() + r * words;
-      if (s.Sheet.Reach(id, row, count, table.data(), k, rowOf, sheet) < 8)
-      {
-        std::fill(sheet, sheet + words, ~uint64_t(0));
-      }
-      s.P.resize(1);
-      s.N.resize(1);
-      s.P[0].setZero();
-      s.N[0] = Eigen::Vector3d(normal[3 * id], normal[3 * id + 1], normal[3 * id + 2]);
-      for (int j = 0; j < count; ++j)
-      {
-        if (!Reached(sheet, j + 1))
-        {
-          continue;
-        }
-        s.P.emplace_back(s.Q[3 * j], s.Q[3 * j + 1], s.Q[3 * j + 2]);
-        const float* nj = normal + 3 * static_cast<vtkIdType>(row[j]);
-        s.N.emplace_back(nj[0], nj[1], nj[2]);
-      }
-      fits[r] = FitCrease(s.P, s.N, s.Label, s.Next);
-      if (fits[r].Sheet >= 0)
-      {
-        // Two parallel sheets (a thin wall): fit the fitted point's sheet alone.
-        const unsigned char side = static_cast<unsigned char>(fits[r].Sheet);
-        size_t kept = 0;
-        for (size_t j = 0; j < s.P.size(); ++j)
-        {
-          if (j == 0 || s.Label[j] == side)
-          {
-            s.P[kept] = s.P[j];
-            s.N[kept] = s.N[j];
-            ++kept;
-          }
-        }
-        s.P.resize(kept);
-        s.N.resize(kept);
-        fits[r] = FitCrease(s.P, s.N, s.Label, s.Next);
-        fits[r].Sheet = -1;
-      }
-    }
-  });
+  run.FitCreases(normal);
+  this->NoiseSigma = std::sqrt(run.Variance);
+  std::vector<unsigned char> detail(static_cast<size_t>(n), 0);
+  if (this->MultiScale)
+  {
+    run.ChooseScales(normal, std::min(SmallestScale, this->NumberOfNeighbors), detail.data());
+  }
+  run.ChooseModels(gains->GetPointer(0), angles->GetPointer(0));
   this->UpdateProgress(0.8);
 
-  // sigma^2, from the whole cloud.
   this->BeginStage("vote");
-  std::vector<double> values(static_cast<size_t>(rows));
-  auto dof = [&](vtkIdType r) { return std::max(fits[r].Points - 6, 0); };
-  for (vtkIdType r = 0; r < rows; ++r)
-  {
-    values[r] = dof(r) > 0 ? fits[r].Hinge.RSS2 / dof(r) : 0.0;
-  }
-  auto median = [](std::vector<double>& v) {
-    if (v.empty())
-    {
-      return 0.0;
-    }
-    auto middle = v.begin() + v.size() / 2;
-    std::nth_element(v.begin(), middle, v.end());
-    return *middle;
-  };
-  const double variance = std::max(median(values), NoiseFloor * NoiseFloor * d * d);
-  this->NoiseSigma = std::sqrt(variance);
-  // Model choice: the hinge, unless it leaves more than HingeMisfit times the noise (surfaces
-  // crossing, corners, strongly curved patches); then the crossing planes, as fitted. The chosen
-  // model replaces the hinge in place: from here on fits[r].Hinge is the fit that votes.
-  float* gain = gains->GetPointer(0);
-  float* angle = angles->GetPointer(0);
-  for (vtkIdType r = 0; r < rows; ++r)
-  {
-    CreaseFit& f = fits[r];
-    if (f.Hinge.RSS2 > HingeMisfit * dof(r) * variance)
-    {
-      f.Hinge = f.Cross;
-    }
-    values[r] = std::max(f.RSS1 - f.Hinge.RSS2, 0.0) / variance;
-    gain[ids[r]] = static_cast<float>(values[r]);
-    angle[ids[r]] = f.Hinge.Angle;
-  }
-
-  // Step 4: votes.
-  const double minAngle = this->MinimumAngle;
-  const double band2 = this->BandWidth * d * this->BandWidth * d;
-  float* vote = votes->GetPointer(0);
-  // One byte per point says whether its fit may vote, so that the vote reads only voters' fits.
-  std::vector<unsigned char> voter(n, 0);
-  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const CreaseLine& f = fits[r].Hinge;
-      voter[ids[r]] = f.HasLine && values[r] > MinimumGain && !(f.Angle < minAngle) ? 1 : 0;
-    }
-  });
-  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
-    double x[3], y[3];
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const vtkIdType id = ids[r];
-      const int32_t* row = table.data() + r * k;
-      const int count = featurepoints::RowLength(row, kf);
-      reader.Get(id, x);
-      int in = 0;
-      // The point's sheet votes, and the fraction is of its members.
-      const uint64_t* sheet = sheets.data() + r * words;
-      int members = 0;
-      for (int j = 0; j <= count; ++j)
-      {
-        members += Reached(sheet, j);
-      }
-      for (int j = -1; j < count; ++j)
-      {
-        const vtkIdType other = j < 0 ? id : static_cast<vtkIdType>(row[j]);
-        if (!voter[other] || !Reached(sheet, j + 1))
-        {
-          continue;
-        }
-        const CreaseLine& f = fits[rowOf[other]].Hinge;
-        reader.Get(other, y);
-        double v[3];
-        for (int c = 0; c < 3; ++c)
-        {
-          v[c] = x[c] - y[c] - f.LinePoint[c];
-        }
-        const double along =
-          v[0] * f.LineDirection[0] + v[1] * f.LineDirection[1] + v[2] * f.LineDirection[2];
-        if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] - along * along <= band2)
-        {
-          ++in;
-        }
-      }
-      vote[id] = static_cast<float>(in) / static_cast<float>(members);
-    }
-  });
-  this->ApplyThreshold(vote, ids, nullptr, nullptr, mask->GetPointer(0));
-
-  // Step 6: hysteresis. Points whose votes exceed GrowThreshold join the feature points they are
-  // connected to through such points (each point linked to its ConnectionNeighbors nearest).
-  // The result is a set of connected components, so it does not depend on the visiting order.
-  // The growth threshold is counted above the cloud's background: the median vote (most points
-  // are not on a crease; on a strongly curved smooth shape every point collects some votes).
-  for (vtkIdType r = 0; r < rows; ++r)
+  run.CastVotes(this->MinimumAngle, this->BandWidth, vote);
+  this->ApplyThreshold(vote, ids, nullptr, nullptr, m);
+  // Hysteresis above the cloud's background: the median vote (most points are not on a crease;
+  // on a strongly curved smooth shape every point collects some votes).
+  std::vector<double> values(ids.size());
+  for (size_t r = 0; r < ids.size(); ++r)
   {
     values[r] = vote[ids[r]];
   }
-  const double growAt = this->GrowThreshold + median(values);
-  this->GrowThresholdUsed = growAt;
-  if (growAt < this->ThresholdUsed)
+  this->GrowThresholdUsed = this->GrowThreshold + Median(values);
+  if (this->GrowThresholdUsed < this->ThresholdUsed)
   {
-    unsigned char* m = mask->GetPointer(0);
-    std::vector<vtkIdType> stack;
-    for (vtkIdType r = 0; r < rows; ++r)
+    this->NumberOfFeaturePoints += run.Grow(vote, this->GrowThresholdUsed, m);
+  }
+
+  // Details finer than the smallest scale and corners, which no fit explains.
+  for (vtkIdType id : ids)
+  {
+    if (detail[id] && !m[id])
     {
-      if (m[ids[r]])
+      m[id] = 1;
+      ++this->NumberOfFeaturePoints;
+    }
+  }
+
+  this->BeginStage("borders");
+  std::vector<unsigned char> border(static_cast<size_t>(n), 0);
+  std::vector<float> outward(3 * static_cast<size_t>(n), 0.0f);
+  if (this->Borders)
+  {
+    run.FindBorders(BorderNeighbors, border.data(), outward.data());
+    if (!this->ThinFeatures)
+    {
+      run.WidenBorders(BorderNeighbors, this->BandWidth, border.data());
+    }
+    for (vtkIdType id : ids)
+    {
+      if (border[id] && !m[id])
       {
-        stack.push_back(r);
+        m[id] = 1;
+        ++this->NumberOfFeaturePoints;
       }
     }
-    const int kc = std::min(ConnectionNeighbors, k);
-    while (!stack.empty())
+  }
+  unsigned char* type = types->GetPointer(0);
+  run.ClassifyFeatures(m, border.data(), outward.data(), normal, BorderNeighbors, type);
+  if (this->ThinFeatures)
+  {
+    this->BeginStage("thin");
+    this->NumberOfFeaturePoints = run.Thin(type, outward.data(), ConnectionNeighbors, m);
+    for (vtkIdType id : ids)
     {
-      const vtkIdType r = stack.back();
-      stack.pop_back();
-      const int32_t* row = table.data() + r * k;
-      for (int j = 0; j < kc && row[j] >= 0; ++j)
-      {
-        const vtkIdType other = row[j];
-        if (!m[other] && vote[other] > growAt)
-        {
-          m[other] = 1;
-          ++this->NumberOfFeaturePoints;
-          stack.push_back(rowOf[other]);
-        }
-      }
+      type[id] = m[id] ? type[id] : 0;
     }
   }
   this->UpdateProgress(1.0);
@@ -654,6 +1300,9 @@ void vtkCreaseVotingFeatures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GrowThreshold: " << this->GrowThreshold << "\n";
   os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
   os << indent << "BandWidth: " << this->BandWidth << "\n";
+  os << indent << "MultiScale: " << this->MultiScale << "\n";
+  os << indent << "Borders: " << this->Borders << "\n";
+  os << indent << "ThinFeatures: " << this->ThinFeatures << "\n";
   os << indent << "NoiseSigma: " << this->NoiseSigma << "\n";
   os << indent << "GrowThresholdUsed: " << this->GrowThresholdUsed << "\n";
 }

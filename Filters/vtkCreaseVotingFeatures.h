@@ -89,6 +89,52 @@ public:
   vtkGetMacro(NumberOfNeighbors, int);
   ///@}
 
+  /** Values of the `FeatureType` point array. */
+  enum FeatureTypes
+  {
+    NONE = 0,    ///< not a feature point
+    CONVEX = 1,  ///< on a convex crease (the faces fall away from it, against the normal)
+    CONCAVE = 2, ///< on a concave crease
+    CORNER = 3,  ///< where three or more creases or borders meet
+    BORDER = 4,  ///< on the border of an open surface or the rim of a wall thinner than the links
+  };
+
+  ///@{
+  /**
+   * Scale per point. Default on. Where the hinge of the NumberOfNeighbors nearest leaves more
+   * than twice the noise per degree of freedom (two creases, a groove, a small face in view),
+   * the neighbourhood is halved until its hinge explains it, down to 20 points; that point's
+   * fit and vote then use that many neighbours.
+   */
+  vtkSetMacro(MultiScale, bool);
+  vtkGetMacro(MultiScale, bool);
+  vtkBooleanMacro(MultiScale, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Open borders as feature points (FeatureType BORDER). Default on. A point is on a border
+   * when its 30 nearest on its sheet leave an empty sector of more than 120 degrees in their
+   * tangent plane: a scan's edge, a hole, the edge of a sheet, the rim of a wall thinner than
+   * the one-sheet links (both sides fold back on each other there).
+   */
+  vtkSetMacro(Borders, bool);
+  vtkGetMacro(Borders, bool);
+  vtkBooleanMacro(Borders, bool);
+  ///@}
+
+  ///@{
+  /**
+   * One point wide. Default off (the mask is a band about 2 BandWidth d wide). On: across each
+   * crease only the points nearest its fitted line are kept (non-maximum suppression among the
+   * 8 nearest feature points that lie more across the line than along it), across each border
+   * the outermost: the row of points nearest the edge, as labels that mark edges as lines do.
+   */
+  vtkSetMacro(ThinFeatures, bool);
+  vtkGetMacro(ThinFeatures, bool);
+  vtkBooleanMacro(ThinFeatures, bool);
+  ///@}
+
   ///@{
   /** k of the PCA normals that seed the two-plane split. Default 15. */
   vtkSetClampMacro(NormalNeighbors, int, 3, 1000);
@@ -150,6 +196,9 @@ protected:
   double BandWidth = 2.0;
   double GrowThreshold = 0.3;
   double MinimumAngle = 12.0;
+  bool MultiScale = true;
+  bool Borders = true;
+  bool ThinFeatures = false;
   double NoiseSigma = 0.0;
   double GrowThresholdUsed = 0.0;
 

@@ -758,7 +758,7 @@ int vtkFeatureModelSource::RequestData(
   truth->SetName("GroundTruth");
   truth->SetNumberOfValues(n);
   vtkNew<vtkUnsignedCharArray> type;
-  type->SetName("FeatureType");
+  type->SetName("GroundTruthType");
   type->SetNumberOfValues(n);
   for (vtkIdType i = 0; i < n; ++i)
   {

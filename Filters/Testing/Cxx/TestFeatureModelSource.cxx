@@ -103,7 +103,7 @@ void CheckClean(const std::string& name, vtkPolyData* cloud, const TruthFunction
 {
   vtkDataArray* d = cloud->GetPointData()->GetArray("FeatureDistance");
   vtkDataArray* labels = cloud->GetPointData()->GetArray("GroundTruth");
-  vtkDataArray* types = cloud->GetPointData()->GetArray("FeatureType");
+  vtkDataArray* types = cloud->GetPointData()->GetArray("GroundTruthType");
   FP_CHECK(d && labels && types, "%s: arrays", name.c_str());
   if (!d || !labels || !types)
   {
@@ -246,7 +246,7 @@ void CheckHandPicked(const std::string& name, vtkPolyData* cloud, const std::arr
 std::array<long, 5> TypeCounts(vtkPolyData* cloud)
 {
   std::array<long, 5> counts{};
-  vtkDataArray* types = cloud->GetPointData()->GetArray("FeatureType");
+  vtkDataArray* types = cloud->GetPointData()->GetArray("GroundTruthType");
   for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
   {
     const int t = static_cast<int>(types->GetComponent(i, 0));
@@ -268,7 +268,7 @@ int TestFeatureModelSource(int, char*[])
   const double a = 0.15 * size, depth = a * std::tan(30.0 * M_PI / 180.0);
   vtkDataArray* delta = clean->GetPointData()->GetArray("FeatureDistance");
   vtkDataArray* truth = clean->GetPointData()->GetArray("GroundTruth");
-  vtkDataArray* type = clean->GetPointData()->GetArray("FeatureType");
+  vtkDataArray* type = clean->GetPointData()->GetArray("GroundTruthType");
   const double s = Field(clean, "CleanMeanSpacing");
   FP_CHECK(clean->GetNumberOfPoints() == 20000 && delta && truth && type, "output shape");
   FP_CHECK(s > 0.0 && Field(clean, "NoiseSigma") == 0.0, "s %g", s);
@@ -775,7 +775,7 @@ int TestFeatureModelSource(int, char*[])
         counts[t] += c[t];
       }
       vtkDataArray* labels = cloud->GetPointData()->GetArray("GroundTruth");
-      vtkDataArray* type = cloud->GetPointData()->GetArray("FeatureType");
+      vtkDataArray* type = cloud->GetPointData()->GetArray("GroundTruthType");
       for (vtkIdType i = 0; type && i < cloud->GetNumberOfPoints(); ++i)
       {
         mismatched += (type->GetComponent(i, 0) != 0) != (labels->GetComponent(i, 0) != 0);
