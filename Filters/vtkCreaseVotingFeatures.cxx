@@ -686,10 +686,12 @@ void CreaseRun::FitCreases(const float* normal)
   });
 }
 
-// Whether one smooth surface or one hinge explains the points within the noise.
+// Whether one smooth surface, one hinge or two crossing planes explain the points within the
+// noise.
 inline bool Explains(const CreaseFit& f, double variance)
 {
-  return std::min(f.RSSQ, f.Hinge.RSS2) <= HingeMisfit * std::max(f.Points - 6, 0) * variance;
+  return std::min(std::min(f.RSSQ, f.Hinge.RSS2), f.Cross.RSS2) <=
+    HingeMisfit * std::max(f.Points - 6, 0) * variance;
 }
 
 void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* detail)
@@ -720,7 +722,8 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
       }
       const double dof = std::max(fit.Points - 6, 0);
       if (this->Scale[r] == this->KFit && fit.Points > 0 &&
-        std::min(fit.RSSQ, fit.Hinge.RSS2) > DetailMisfit * dof * this->Variance)
+        std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), fit.Cross.RSS2) >
+          DetailMisfit * dof * this->Variance)
       {
         detail[this->Ids[r]] = 1;
       }
@@ -738,7 +741,8 @@ void CreaseRun::ChooseModels(float* gain, float* angle)
   {
     CreaseFit& f = this->Fits[r];
     f.Explained = Explains(f, this->Variance);
-    if (!f.Explained)
+    if (f.Hinge.RSS2 > HingeMisfit * std::max(f.Points - 6, 0) * this->Variance &&
+      f.Cross.RSS2 < f.Hinge.RSS2)
     {
       f.Hinge = f.Cross;
     }

@@ -27,10 +27,19 @@
  *    the noise variance per degree of freedom (surfaces crossing, corners), the crossing planes
  *    are kept instead. Where the crossing planes come out parallel and several noise widths
  *    apart (two sheets the links did not separate), the fit is redone on P_i's sheet.
- * 2. Crease gain G_i = (RSS_1 - RSS_2) / sigma^2: how much better two planes fit than one (RSS:
- *    sums of squared distances to the planes), in units of the cloud's noise variance sigma^2,
- *    estimated as the median over the cloud of the hinge's RSS_2 / (N - 6) and never taken
- *    below (0.05 d)^2, d being the mean spacing.
+ * 2. Crease gain G_i = (RSS_Q - RSS_2) / sigma^2: how much better the two planes fit than one
+ *    smooth quadric height field over the one-plane fit (RSS: sums of squared distances), in
+ *    units of the cloud's noise variance sigma^2. A cylinder or a sphere is explained by the
+ *    quadric however curved, a crease is not. sigma^2 is the median over the cloud of the
+ *    residual per degree of freedom of the quadric through each point's NormalNeighbors nearest
+ *    (curvature is explained at that scale, creases touch few points), never below (0.05 d)^2,
+ *    d being the mean spacing.
+ * 2b. Scale per point (MultiScale). Where neither the quadric, the hinge nor the crossing planes
+ *    explain the k nearest within twice sigma^2 per degree of freedom (two creases, a groove, a
+ *    small face in view), the neighbourhood is halved (k/2, k/4, not below 20 points) until one
+ *    does; that point's fit and vote use that many neighbours. Where none explains even the
+ *    smallest within 3 sigma^2 (a corner, faces narrower than the smallest scale) the point is a
+ *    feature point.
  * 3. Crease line of the fit: the intersection of the two planes (when they are not parallel).
  * 4. Vote. A point j of P_i's neighbourhood (P_i included) votes for P_i when its two planes
  *    fit better than one (gain above 1), meet at MinimumAngle or more, and its crease line
@@ -53,10 +62,21 @@
  * scaled or moved, and the neighbourhoods are counts, so denser and sparser regions are treated
  * alike.
  *
+ * 7. Borders (Borders): a point whose 50 nearest on its sheet leave an empty sector above 120
+ *    degrees in their tangent plane is on a border (sets of fewer than 25 connected such points,
+ *    the rims of voids in the sampling, are dropped); the points within BandWidth d of it join.
+ * 8. FeatureType: BORDER, else CORNER where the directions of the explained crease lines and
+ *    borders among the 50 nearest feature points spread (middle eigenvalue of the mean of t t^T
+ *    above 0.18), else CONVEX or CONCAVE by the side of the line the fitted planes' centroids
+ *    lie on, against the point's normal.
+ * 9. ThinFeatures: across each crease line only the feature points nearest it (non-maximum
+ *    suppression among the 8 nearest feature points lying more across the line than along it),
+ *    across each border the outermost.
+ *
  * Output arrays: `CreaseVotes` (float, the score, 0-1), `CreaseGain` (float, G_i), `CreaseAngle`
  * (float, the angle between the two fitted planes in degrees, 0 when no line was found),
- * `Normals` (float, 3, the PCA normals of step 1, oriented away from the bounding box's centre)
- * and `FeatureMask`. GetNoiseSigma() returns sigma, in the cloud's units.
+ * `Normals` (float, 3, the PCA normals of step 1, oriented away from the bounding box's centre),
+ * `FeatureType` (uint8, FeatureTypes) and `FeatureMask`. GetNoiseSigma() returns sigma, in the cloud's units.
  *
  * The work per point depends on that point only: the result is identical for any thread count.
  *
@@ -143,9 +163,10 @@ public:
 
   ///@{
   /**
-   * How far from a fitted crease line a point still counts as on it, in mean spacings d. Default
-   * 2: EVALUATION.md's feature points are those within 2 s of a feature curve. Labels that mark
-   * only the row of points nearest the edge (PCEDNet's) call for about 1.
+   * How far from a fitted crease line (or from a border's outermost row) a point still counts as
+   * on it, in mean spacings d. Default 2: the project's feature points are those within 2 s of a
+   * feature curve. Labels that mark only the row of points nearest the edge (PCEDNet's)
+   * call for ThinFeatures.
    */
   vtkSetClampMacro(BandWidth, double, 0.01, 1000.0);
   vtkGetMacro(BandWidth, double);

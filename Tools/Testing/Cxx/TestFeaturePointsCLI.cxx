@@ -405,14 +405,18 @@ int main(int argc, char* argv[])
     filter->ThinFeaturesOn();
     CheckSameMask("vtp -> vtp, --thin", filter, vtp, Path("thin.vtp"));
   }
-  // --single-scale, and the three flags together: the library's masks.
+  // --single-scale, and the three flags together: the library's masks. On a box, whose corners no
+  // fit of the 150 nearest explains, the scale per point changes the votes.
   {
-    const Run run = Execute({ vtp, Path("single.vtp"), "--single-scale" });
+    const std::string box = Path("box.vtp");
+    Check(vtkPointCloudIO::Write(ModelCloud(vtkFeatureModelSource::BOX, 20000), box, error),
+      "write box.vtp: " + error);
+    const Run run = Execute({ box, Path("single.vtp"), "--single-scale" });
     Check(run.Code == 0, "--single-scale: " + run.Err);
     vtkNew<vtkCreaseVotingFeatures> filter;
     filter->MultiScaleOff();
-    CheckSameMask("vtp -> vtp, --single-scale", filter, vtp, Path("single.vtp"));
-    // The mask may not change on this cloud; the votes do: they are the single scale's.
+    CheckSameMask("vtp -> vtp, --single-scale", filter, box, Path("single.vtp"));
+    // The votes are the single scale's, not the default's.
     vtkNew<vtkCreaseVotingFeatures> multi;
     multi->SetInputData(filter->GetInput());
     multi->Update();
