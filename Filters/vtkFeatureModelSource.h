@@ -72,7 +72,7 @@
  * PARALLEL_CREASES and THIN_PLATE, whose area depends on it through FeatureSeparation, are built
  * with the spacing that their own area gives (exactly, not an estimate). Then every point is
  * moved by isotropic Gaussian noise of standard deviation NoiseFactor * s, where s is the mean
- * nearest-neighbour distance of the clean cloud (EVALUATION.md: sigma = 0.5 s by default).
+ * nearest-neighbour distance of the clean cloud (sigma = 0.5 s by default).
  * Everything follows from Seed: the same parameters give the same cloud on every run and every
  * thread count.
  *
