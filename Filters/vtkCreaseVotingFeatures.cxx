@@ -1113,22 +1113,9 @@ vtkIdType CreaseRun::Thin(
       }
       const double zero[3] = { 0.0, 0.0, 0.0 };
       const double own = isBorder ? 0.0 : this->LineDistance(r, zero);
-      // Direction along the curve: the crease line, or along the border.
-      double t[3];
+      // Along a crease: its line's direction; across a border: the outward direction.
+      const float* t = f.LineDirection;
       const float* u = outward + 3 * id;
-      if (isBorder)
-      {
-        // Any unit vector orthogonal to the outward direction within the neighbours' plane
-        // is along the border; the test below only needs "mostly across".
-        t[0] = t[1] = t[2] = 0.0;
-      }
-      else
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          t[c] = f.LineDirection[c];
-        }
-      }
       bool kept = true;
       for (int j = 0; j < count && kept; ++j)
       {
