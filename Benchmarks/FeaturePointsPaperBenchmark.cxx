@@ -1,7 +1,7 @@
-// The paper's comparison, reproduced in one run (issue 3):
+// The paper's comparison, reproduced in one run (docs/benchmarks.md):
 // - Table 1: Models I-III (vtkFeatureModelSource, feature bands sampled denser, sigma = 0.5 s),
 //   each method with default parameters: points, Pr, Pt (the paper's), precision, recall, F1,
-//   MCC (EVALUATION.md) and seconds.
+//   MCC (docs/evaluation.md) and seconds.
 // - Table 2: the proposed method with and without the voxel step, on the same models sampled with
 //   denser features and uniformly: seconds (median of --repeat runs), F1, Pr, Pt, time saved.
 // - The labelled PCEDNet clouds (coordinates only given to the detectors): precision, recall and

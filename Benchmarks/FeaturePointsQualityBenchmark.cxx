@@ -2,7 +2,7 @@
 // (vtkCreaseVotingFeatures, "Crease") beside the paper's method as published
 // (vtkFeaturePointExtraction, "Huang2023"), each at its own defaults, no per-cloud tuning:
 // - CAD-like parts (vtkFeatureModelSource: Models I-III, Box, Cylinder, Bracket) with features
-//   sampled 3x denser and uniformly, sigma = 0.5 s: precision, recall, F1 (EVALUATION.md).
+//   sampled 3x denser and uniformly, sigma = 0.5 s: precision, recall, F1 (docs/evaluation.md).
 // - Smooth shapes (Sphere, Blob) at sigma = 0, 0.25 s, 0.5 s: false detections per 1000 points,
 //   at the scaled point counts and at 7,000 points.
 // - PCEDNet's labelled clouds (coordinates only): MCC per cloud, median per folder and overall.
@@ -183,7 +183,7 @@ vtkDataArray* Mask(vtkFeaturePointDetector* filter, vtkPolyData* input)
 }
 
 // Runs one method on a synthetic cloud, prints " P / R / F1 |" (after the method's name when
-// `named`) and returns F1; s is the clean mean spacing of EVALUATION.md's bands.
+// `named`) and returns F1; s is the clean mean spacing of docs/evaluation.md's bands.
 double PrintScores(const Method& method, vtkPolyData* cloud, double s, bool named)
 {
   auto filter = method.Make();

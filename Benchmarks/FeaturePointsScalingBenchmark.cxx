@@ -1,4 +1,4 @@
-// Speed and memory at every size (issue 6), measured against VTK's own point filters in the same
+// Speed and memory at every size (docs/benchmarks.md), measured against VTK's own point filters in the same
 // process, on the same clouds:
 // - for each size (default 100K, 1M, 10M points of Model I, features sampled 3x denser): the
 //   proposed method's time per stage, points per second, peak memory beyond the input, and the

@@ -134,7 +134,7 @@ public:
   ///@{
   /**
    * Open borders as feature points (FeatureType BORDER). Default on. A point is on a border
-   * when its 30 nearest on its sheet leave an empty sector of more than 120 degrees in their
+   * when its 50 nearest on its sheet leave an empty sector of more than 120 degrees in their
    * tangent plane: a scan's edge, a hole, the edge of a sheet, the rim of a wall thinner than
    * the one-sheet links (both sides fold back on each other there).
    */

@@ -736,7 +736,7 @@ int vtkFeatureModelSource::RequestData(
   {
     points->SetPoint(i, clean[i].X, clean[i].Y, clean[i].Z);
   }
-  // s of EVALUATION.md: the mean nearest-neighbour distance of the clean cloud.
+  // s of docs/evaluation.md: the mean nearest-neighbour distance of the clean cloud.
   vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
   double s = 0.0;
   if (n > 1 && neighborhoods->Build(points))

@@ -80,7 +80,7 @@
  * - `FeatureDistance` (double): the clean (pre-noise) distance delta from the point to the
  *   nearest feature curve (exact, the circles' and the borders' included); VTK_FLOAT_MAX on a
  *   model without features (SPHERE, BLOB).
- * - `GroundTruth` (uint8): 1 for the positives of EVALUATION.md, delta <= 2 s.
+ * - `GroundTruth` (uint8): 1 for the positives of docs/evaluation.md, delta <= 2 s.
  * - `GroundTruthType` (uint8, FeatureTypes): NOT_FEATURE (0) where GroundTruth is 0; else CORNER (3)
  *   within 2 s of a corner (the clean position), else the type of the nearest feature curve:
  *   CONVEX_CREASE (1), CONCAVE_CREASE (2) or BORDER (4). The corners are the points where three

@@ -8,8 +8,10 @@
  *
  * - Input: any vtkPointSet; only its points are used. Points with NaN or infinite coordinates are
  *   skipped (warning; scores 0, never feature points).
- * - Neighbourhoods: one vtkPointCloudNeighborhoods (one vtkStaticPointLocator, one k-nearest
- *   query per point) and the mean spacing d of the cloud, the unit of every radius.
+ * - Neighbourhoods: one vtkPointCloudNeighborhoods per run (by default its own uniform grid,
+ *   optionally a vtkStaticPointLocator; one k-nearest query per point, the cloud renumbered in
+ *   the grid's order while the method works) and the mean spacing d of the cloud, the unit of
+ *   every radius.
  * - Threshold: AUTOMATIC (default) treats the scores as a background distribution with a
  *   minority of outliers: its centre mu and scale s are the median and the normalized median
  *   absolute deviation (1.4826 MAD), re-estimated after discarding the values above mu + z s until

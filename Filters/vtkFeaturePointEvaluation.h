@@ -1,6 +1,6 @@
 /**
  * @class   vtkFeaturePointEvaluation
- * @brief   Quality figures of a feature point detection, as EVALUATION.md defines them.
+ * @brief   Quality figures of a feature point detection, as docs/evaluation.md defines them.
  *
  * Two kinds of ground truth:
  *
@@ -44,7 +44,7 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** Radii in units of the clean mean spacing s (EVALUATION.md: 2, 4; the paper's r: 1.3). */
+  /** Radii in units of the clean mean spacing s (docs/evaluation.md: 2, 4; the paper's r: 1.3). */
   vtkSetClampMacro(PositiveRadius, double, 0.0, 1e6);
   vtkGetMacro(PositiveRadius, double);
   vtkSetClampMacro(CorrectRadius, double, 0.0, 1e6);

@@ -275,10 +275,10 @@ int vtkFeaturePointExtraction::RequestData(
   {
     std::copy(valid, valid + n, isCandidate);
   }
-  // The scored points: the candidates, and for the AUTOMATIC threshold every BackgroundStride-th
-  // other point, so that the threshold sees the cloud's background rather than the candidates'
-  // feature-rich population alone. The sample is scored but never marked, and its scores are
-  // cleared from the output.
+  // The scored points: the candidates, and for the AUTOMATIC threshold the other points of a
+  // sample of whole blocks (SampleBackground), so that the threshold sees the cloud's background
+  // rather than the candidates' feature-rich population alone. The sample is scored but never
+  // marked, and its scores are cleared from the output.
   std::vector<vtkIdType> background;
   int backgroundWeight = 1;
   if (screen)
@@ -367,7 +367,8 @@ int vtkFeaturePointExtraction::RequestData(
   this->UpdateProgress(0.9);
 
   // Threshold and mask, decided on the stored (float) F so that the output agrees with itself.
-  // For the AUTOMATIC rule each background point stands for BackgroundStride non-candidates.
+  // For the AUTOMATIC rule each background point stands for backgroundWeight non-candidates (the
+  // non-candidates of the blocks SampleBackground did not sample).
   std::vector<int> weights(ids.size(), 1);
   for (size_t r = 0; r < ids.size(); ++r)
   {

@@ -163,7 +163,10 @@ public:
   ///@}
 
   ///@{
-  /** epsilon of the voxel pre-filter (see vtkVoxelDensityContrastFilter). Default 1.5. */
+  /**
+   * epsilon of the voxel pre-filter (see vtkVoxelDensityContrastFilter): the relative density
+   * excess of a contrast voxel. Default 0.5 (a block half as dense again as the typical one).
+   */
   vtkSetClampMacro(DensityContrast, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(DensityContrast, double);
   ///@}

@@ -61,9 +61,8 @@ public:
    * How the k nearest points are found; both give the same tables (ties in distance aside, which
    * GRID breaks by the smaller point id). GRID, the default, sorts the points into a uniform grid
    * of about two cells per point over the cloud's robust bounding box and searches rings of cells
-   * around each query, the queries themselves taken cell by cell: measured against
-   * STATIC_POINT_LOCATOR in Benchmarks/FeaturePointsScalingBenchmark (README, "Speed"). Set before
-   * Build().
+   * around each query, the queries themselves taken cell by cell: about 3 times faster than
+   * STATIC_POINT_LOCATOR here (docs/design.md, "Neighbourhoods"). Set before Build().
    */
   void SetSearchMethod(int method) { this->SearchMethod = method == STATIC_POINT_LOCATOR ? method : GRID; }
   int GetSearchMethod() const { return this->SearchMethod; }
@@ -92,8 +91,9 @@ public:
    * Why: a filter that scores points reads, for each, the coordinates and per-point values of its
    * neighbours. In a cloud stored in random order (a scanner's, a sampler's, a shuffled file's)
    * these reads are scattered over the whole cloud; in this order neighbours sit near each other
-   * in memory and consecutive queries share them, which makes the whole filter faster (README,
-   * "Speed"). The order depends on the points only, not on the number of threads.
+   * in memory and consecutive queries share them, which makes the whole filter faster
+   * (docs/design.md, "Neighbourhoods"). The order depends on the points only, not on the number
+   * of threads.
    *
    * Returns false, and changes nothing, with STATIC_POINT_LOCATOR, before a successful Build(), or
    * once a spacing or a neighbour table has been computed.

@@ -73,7 +73,7 @@ public:
   enum ContrastRules
   {
     VOXEL_COUNTS = 0,      ///< the paper: N(i) against N(j)
-    BLOCK_SPACING = 1, ///< 3x3x3 block nearest-point spacing against the cloud's median
+    BLOCK_SPACING = 1, ///< 5x5x5 block nearest-point spacing against the cloud's median
   };
 
   ///@{

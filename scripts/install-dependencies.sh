@@ -3,7 +3,7 @@
 #   scripts/install-dependencies.sh             the plain VTK build: libvtk9-dev (VTK 9.1)
 #   scripts/install-dependencies.sh --paraview  the ParaView 5.11 plugin build: paraview-dev
 # The two cannot be installed together (libvtk9-dev needs python3-vtk9, which conflicts with
-# python3-paraview): each mode removes what conflicts with it. README, "ParaView plugin".
+# python3-paraview): each mode removes what conflicts with it. README.md, "ParaView plugin".
 set -euo pipefail
 common=(cmake g++ make libeigen3-dev xvfb xauth)
 if [ "${1:-}" = "--paraview" ]; then

@@ -1,6 +1,6 @@
 // Seeded synthetic clouds for the tests of FeaturePoints::Filters, with the clean distance of each
-// point to the nearest feature curve (EVALUATION.md's delta) and the quality figures of
-// EVALUATION.md. Header-only; test code, not part of the module's API.
+// point to the nearest feature curve (docs/evaluation.md's delta) and the quality figures of
+// docs/evaluation.md. Header-only; test code, not part of the module's API.
 #ifndef FeaturePointsTestClouds_h
 #define FeaturePointsTestClouds_h
 
@@ -168,7 +168,7 @@ struct Quality
   long Detections = 0, Positives = 0;
 };
 
-// EVALUATION.md: positives delta <= 2s, correct detections delta <= 4s.
+// docs/evaluation.md: positives delta <= 2s, correct detections delta <= 4s.
 inline Quality Evaluate(const Cloud& cloud, vtkUnsignedCharArray* mask)
 {
   Quality q;

@@ -1,5 +1,6 @@
 // Two noisy planes meeting along a crease (bent by 90 and by 30 degrees, sigma = 0.5 spacing):
-// the feature points form a band along the crease, scored with EVALUATION.md's precision and recall.
+// the feature points form a band along the crease, scored with the precision and recall of
+// docs/evaluation.md.
 // Floors sit a little below the figures measured when the test was written (in the comments).
 #include "FeaturePointsTestRun.h"
 

@@ -1,5 +1,5 @@
 // A noisy plane and a noisy sphere have no feature: with default parameters the filter marks
-// (almost) none of their points (EVALUATION.md: false detections per 1000 points).
+// (almost) none of their points (docs/evaluation.md: false detections per 1000 points).
 #include "FeaturePointsTestRun.h"
 
 int TestFeaturePointSmoothShapes(int, char*[])
