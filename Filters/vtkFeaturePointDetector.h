@@ -150,9 +150,9 @@ protected:
    * On success the cloud is renumbered in a spatially coherent order
    * (vtkPointCloudNeighborhoods::ReorderSpatially): the method then reads its points from
    * `neighborhoods->GetPoints()` and fills its arrays in that numbering, and AssembleOutput()
-   * puts them back in the input's order. The results do not depend on the input's order, as
-   * before, except where distances tie exactly (duplicates, lattices), where the k-nearest tables
-   * break ties by the new numbering (grid cell, then input id) instead of the input id alone.
+   * puts them back in the input's order. The results do not depend on the input's order, except
+   * where distances tie exactly (duplicates, lattices): the k-nearest tables break such ties by
+   * the renumbering (grid cell, then input id).
    */
   bool PrepareNeighborhoods(vtkPoints* points, vtkIdType n, int k,
     vtkPointCloudNeighborhoods* neighborhoods);
