@@ -24,6 +24,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -214,6 +215,31 @@ bool CheckProperty(vtkObject* object, const std::string& proxy, vtkXMLDataElemen
   else
   {
     std::printf("  %-48s %s\n", where.c_str(), defaults);
+  }
+  // The documentation's own "Default X" (or "On (default)" / "Off (default)"), where it says one.
+  for (int d = 0; d < property->GetNumberOfNestedElements(); ++d)
+  {
+    vtkXMLDataElement* doc = property->GetNestedElement(d);
+    if (std::string(doc->GetName()) != "Documentation" || !doc->GetCharacterData())
+    {
+      continue;
+    }
+    const std::string text = doc->GetCharacterData();
+    std::smatch match;
+    static const std::regex number("Default (-?[0-9][0-9.e+-]*[0-9]|-?[0-9])");
+    static const std::regex flag("(On|Off) \\(default");
+    if (std::regex_search(text, match, number) && expected.size() == 1 &&
+      !Same(std::atof(match[1].str().c_str()), expected[0]))
+    {
+      Fail(where + ": its documentation says 'Default " + match[1].str() +
+        "', the filter's default is " + library);
+    }
+    else if (std::regex_search(text, match, flag) && expected.size() == 1 &&
+      (match[1].str() == "On") != (expected[0] != 0))
+    {
+      Fail(where + ": its documentation says '" + match[1].str() + " (default)', the filter's default is " +
+        library);
+    }
   }
   // Domains: a range must be the setter's clamp range where the setter clamps; an enumeration
   // or a boolean must hold the default.
