@@ -36,6 +36,7 @@ namespace
 {
 int failures = 0;
 bool check = false;
+bool verbose = false;
 
 void Floor(const std::string& what, double value, double floor)
 {
@@ -199,6 +200,33 @@ Scores Evaluate(vtkPolyData* found, vtkPolyData* truth, const Region& region, do
   }
   r.Recall = trueScored ? trueNear / trueScored : 0.0;
   r.F1 = r.Precision + r.Recall > 0 ? 2 * r.Precision * r.Recall / (r.Precision + r.Recall) : 0.0;
+  if (verbose)
+  {
+    // Each polyline in the scored region: its ends, its length and its samples' mean distance.
+    std::vector<double> length(polylineIn.size(), 0.0), sum(polylineIn.size(), 0.0);
+    std::vector<int> count(polylineIn.size(), 0);
+    for (size_t k = 0; k < f.size(); ++k)
+    {
+      sum[fOwner[k]] += toTruth.Distance(f[k]) / s;
+      ++count[fOwner[k]];
+    }
+    for (vtkIdType c = 0; c < found->GetNumberOfCells(); ++c)
+    {
+      if (!polylineIn[c])
+      {
+        continue;
+      }
+      vtkNew<vtkIdList> ids;
+      found->GetCellPoints(c, ids);
+      double a[3], b[3];
+      found->GetPoint(ids->GetId(0), a);
+      found->GetPoint(ids->GetId(ids->GetNumberOfIds() - 1), b);
+      std::printf("    line %lld: %lld vertices, (%.2f %.2f %.2f) - (%.2f %.2f %.2f), mean "
+                  "distance %.2f s\n",
+        static_cast<long long>(c), static_cast<long long>(ids->GetNumberOfIds()), a[0], a[1], a[2],
+        b[0], b[1], b[2], count[c] ? sum[c] / count[c] : 0.0);
+    }
+  }
   r.Polylines = static_cast<int>(std::count(polylineIn.begin(), polylineIn.end(), 1));
   r.TrueCurves = static_cast<int>(std::count(curveIn.begin(), curveIn.end(), 1));
   r.PerCurve = r.TrueCurves ? static_cast<double>(r.Polylines) / r.TrueCurves : 0.0;
@@ -265,6 +293,7 @@ double Median(std::vector<double> v)
 int main(int argc, char* argv[])
 {
   double scale = 0.3;
+  std::string only;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -276,11 +305,21 @@ int main(int argc, char* argv[])
     {
       check = true;
     }
+    else if (a == "--verbose")
+    {
+      verbose = true;
+    }
+    else if (a == "--only" && i + 1 < argc)
+    {
+      only = argv[++i];
+    }
     else
     {
-      std::printf("usage: %s [--scale F] [--check]\n"
-                  "  --scale F  fraction of the models' default point counts (default 0.3)\n"
-                  "  --check    compare the figures with their floors (set at --scale 0.3)\n",
+      std::printf("usage: %s [--scale F] [--check] [--verbose] [--only NAME]\n"
+                  "  --scale F    fraction of the models' default point counts (default 0.3)\n"
+                  "  --check      compare the figures with their floors (set at --scale 0.3)\n"
+                  "  --verbose    list each polyline of the scored region\n"
+                  "  --only NAME  run the cases whose name contains NAME\n",
         argv[0]);
       return a == "--help" || a == "-h" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
@@ -306,6 +345,10 @@ int main(int argc, char* argv[])
     Header();
     for (const auto& entry : cases)
     {
+      if (!only.empty() && entry.first.find(only) == std::string::npos)
+      {
+        continue;
+      }
       double seconds = 0.0;
       const Scores r = Run(entry.second, seconds);
       PrintRow(entry.first, entry.second, r, seconds);
@@ -363,6 +406,10 @@ int main(int argc, char* argv[])
     { "Plate with hole", { vtkFeatureModelSource::PLATE_WITH_HOLE, count, 1.0, 0.25, 5.0 } });
   runSection(cases);
 
+  if (f1s.empty())
+  {
+    return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  }
   std::printf("\nall rows: F1 lowest %.3f, median %.3f; lines / true highest %.2f, median %.2f; "
               "dist at sigma 0.5 s highest %.2f, median %.2f\n",
     *std::min_element(f1s.begin(), f1s.end()), Median(f1s),

@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <functional>
 #include <map>
 #include <numeric>
@@ -50,7 +51,9 @@ constexpr double AssignRadius = 3.0;    // s: feature points this close to a cur
 const double CornerTurn = std::cos(45.0 * Pi / 180.0); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
 const double BridgeCone = std::cos(30.0 * Pi / 180.0); // an end joins what lies in this cone
-constexpr int SmoothingPasses = 5;
+constexpr int SmoothingPasses = 20;
+constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's points
+constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
 constexpr double SectionCore = 1.0; // s: points this near the vertex do not fit the faces' lines
 const double MinimumCreaseAngle = std::sin(10.0 * Pi / 180.0); // flatter faces: no intersection
 
@@ -291,6 +294,9 @@ public:
   // Stage 3: spurs and short pieces out, splits where a curve turns sharply.
   void RemoveSpurs();
   void SplitAtCorners();
+  // Short curves between two junctions (a corner traced round as well as along its edges) are
+  // collapsed into one corner.
+  void CollapseShortLinks();
   // The curves of the graph.
   std::vector<Chain> ExtractChains() const;
   // Stage 4: vertices onto the cross-section's fit, smoothed, resampled.
@@ -311,6 +317,7 @@ private:
   void TraceFrom(vtkIdType seed, int trace);
   void Walk(int start, V3 x, V3 d, int trace, int sign);
   void Cover(const V3& x);
+  int NearbyEnd(int v, int steps) const;
   V3 EndDirection(int end) const;
   std::vector<int> Components() const;
   V3 FitSection(const V3& x, const V3& t) const;
@@ -462,18 +469,32 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
   for (size_t step = 1; step <= maxSteps; ++step)
   {
     V3 y = x + this->H * d;
-    const LineFit f = this->FitAt(y, ids);
-    int ahead = 0;
-    for (vtkIdType i : ids)
+    // The fit at y; where the trace points are sparse or noisy, again over a wider ball.
+    LineFit f;
+    V3 t;
+    bool found = false;
+    for (const double radius : { this->R, 1.5 * this->R })
     {
-      ahead += (this->TracePoints[i] - x).dot(d) > 0.5 * this->H;
+      this->TraceSearch.Within(y, radius, ids);
+      f = FitLine(this->TracePoints, ids, y);
+      int ahead = 0;
+      for (vtkIdType i : ids)
+      {
+        ahead += (this->TracePoints[i] - x).dot(d) > 0.5 * this->H;
+      }
+      t = f.Direction.dot(d) >= 0.0 ? f.Direction : V3(-f.Direction);
+      if (ahead >= 2 && f.Count >= MinFitPoints && f.Flatness <= MaxFlatness &&
+        t.dot(d) >= MaxTurnPerStep)
+      {
+        found = true;
+        break;
+      }
+      if (ahead < 2 && radius == this->R)
+      {
+        break; // an end: nothing ahead
+      }
     }
-    if (ahead < 2 || f.Count < MinFitPoints || f.Flatness > MaxFlatness)
-    {
-      return;
-    }
-    const V3 t = f.Direction.dot(d) >= 0.0 ? f.Direction : V3(-f.Direction);
-    if (t.dot(d) < MaxTurnPerStep)
+    if (!found)
     {
       return;
     }
@@ -487,7 +508,7 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
       [&](int v) { return this->TraceOf[v] != trace || std::abs(this->ArcOf[v] - arc) > ownReach; });
     if (hit >= 0)
     {
-      this->G.Link(previous, hit);
+      this->G.Link(previous, this->NearbyEnd(hit, ownReach / 2));
       return;
     }
     const int v = this->G.Add(y);
@@ -500,6 +521,33 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
     x = y;
     d = t;
   }
+}
+
+int CurveRun::NearbyEnd(int v, int steps) const
+{
+  // Breadth-first along the curves: the nearest free end within `steps` edges, else v itself.
+  std::vector<std::pair<int, int>> queue{ { v, 0 } };
+  std::set<int> seen{ v };
+  for (size_t k = 0; k < queue.size(); ++k)
+  {
+    const int a = queue[k].first;
+    if (this->G.Degree(a) == 1)
+    {
+      return a;
+    }
+    if (queue[k].second >= steps)
+    {
+      continue;
+    }
+    for (int b : this->G.Adjacent[a])
+    {
+      if (seen.insert(b).second)
+      {
+        queue.emplace_back(b, queue[k].second + 1);
+      }
+    }
+  }
+  return v;
 }
 
 std::vector<Chain> CurveRun::ExtractChains() const
@@ -776,6 +824,45 @@ void CurveRun::JoinEnds()
   }
 }
 
+void CurveRun::CollapseShortLinks()
+{
+  for (int round = 0; round < 100000; ++round)
+  {
+    bool changed = false;
+    for (const Chain& chain : this->ExtractChains())
+    {
+      const int a = chain.Ids.front(), b = chain.Ids.back();
+      auto junction = [&](int v) { return this->G.Degree(v) >= 3 || this->G.Node[v]; };
+      if (chain.Closed || !junction(a) || !junction(b) ||
+        ChainLength(chain, this->G.Vertices) >= this->J)
+      {
+        continue;
+      }
+      for (size_t k = 1; k < chain.Ids.size(); ++k)
+      {
+        this->G.Unlink(chain.Ids[k - 1], chain.Ids[k]);
+      }
+      if (a != b)
+      {
+        const std::vector<int> moved = this->G.Adjacent[b];
+        for (int w : moved)
+        {
+          this->G.Unlink(b, w);
+          this->G.Link(a, w);
+        }
+        this->G.Vertices[a] = 0.5 * (this->G.Vertices[a] + this->G.Vertices[b]);
+      }
+      this->G.Node[a] = 1;
+      changed = true;
+      break; // the chains changed
+    }
+    if (!changed)
+    {
+      return;
+    }
+  }
+}
+
 void CurveRun::SplitAtCorners()
 {
   const int w = std::max(1, static_cast<int>(std::lround(CornerWindow * this->S / this->H)));
@@ -873,27 +960,54 @@ V3 CurveRun::FitCrease(
   for (size_t k = 0; k < q.size(); ++k)
   {
     side[k] = (nq[k] - mean).dot(axis) >= 0.0 ? 1 : 0;
-    c[side[k]] += q[k];
-    ++count[side[k]];
   }
-  if (count[0] < 5 || count[1] < 5)
-  {
-    return x;
-  }
+  // Then, as k-means with lines, each point to the nearer line (the normals near the crease mix
+  // both faces'), until the split settles.
   Eigen::Vector2d u[2];
-  for (int g = 0; g < 2; ++g)
+  for (int round = 0; round < 6; ++round)
   {
-    c[g] /= count[g];
-    Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
+    for (int g = 0; g < 2; ++g)
+    {
+      Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
+      c[g] = Eigen::Vector2d::Zero();
+      count[g] = 0;
+      for (size_t k = 0; k < q.size(); ++k)
+      {
+        if (side[k] == g)
+        {
+          c[g] += q[k];
+          ++count[g];
+        }
+      }
+      if (count[g] < 5)
+      {
+        return x;
+      }
+      c[g] /= count[g];
+      for (size_t k = 0; k < q.size(); ++k)
+      {
+        if (side[k] == g)
+        {
+          m += (q[k] - c[g]) * (q[k] - c[g]).transpose();
+        }
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> line(m);
+      u[g] = line.eigenvectors().col(1);
+    }
+    bool changed = false;
     for (size_t k = 0; k < q.size(); ++k)
     {
-      if (side[k] == g)
-      {
-        m += (q[k] - c[g]) * (q[k] - c[g]).transpose();
-      }
+      const Eigen::Vector2d a = q[k] - c[0], b = q[k] - c[1];
+      const double da = std::abs(a[0] * u[0][1] - a[1] * u[0][0]);
+      const double db = std::abs(b[0] * u[1][1] - b[1] * u[1][0]);
+      const int g = da <= db ? 0 : 1;
+      changed = changed || g != side[k];
+      side[k] = g;
     }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> line(m);
-    u[g] = line.eigenvectors().col(1);
+    if (!changed)
+    {
+      break;
+    }
   }
   // c0 + a u0 = c1 + b u1
   const double det = u[0][0] * (-u[1][1]) - u[0][1] * (-u[1][0]);
@@ -940,7 +1054,7 @@ V3 CurveRun::FitBorder(
   {
     u = -u; // into the face
   }
-  const double window = 0.75 * this->R;
+  const double window = this->R;
   double b = -c.dot(u); // the vertex, along the line
   for (int round = 0; round < 3; ++round)
   {
@@ -971,12 +1085,12 @@ V3 CurveRun::FitBorder(
 
 V3 CurveRun::FitSection(const V3& x, const V3& t) const
 {
-  // The slab of all points within R of x and R / 2 along the curve.
+  // The slab of all points within 1.5 R of x and 0.75 R along the curve.
   std::vector<vtkIdType> ids;
-  this->AllSearch.Within(x, this->R, this->Scratch);
+  this->AllSearch.Within(x, SectionRadius * this->R, this->Scratch);
   for (vtkIdType i : this->Scratch)
   {
-    if (std::abs((this->Points[i] - x).dot(t)) <= 0.5 * this->R)
+    if (std::abs((this->Points[i] - x).dot(t)) <= SectionLength * this->R)
     {
       ids.push_back(i);
     }
@@ -1135,7 +1249,7 @@ std::vector<std::vector<V3>> CurveRun::FitCurves(const std::vector<Chain>& chain
   }
   for (int v = 0; v < n; ++v)
   {
-    if (this->G.Degree(v) > 0 && !this->G.Node[v] && tangent[v].squaredNorm() > 0.0)
+    if (this->G.Degree(v) > 0 && !this->G.Node[v] && tangent[v].squaredNorm() > 0.0 && !std::getenv("FP_NOFIT"))
     {
       fitted[v] = this->FitSection(this->G.Vertices[v], tangent[v]);
     }
@@ -1291,6 +1405,8 @@ int vtkFeatureCurveExtraction::RequestData(
   this->UpdateProgress(0.6);
   run.RemoveSpurs();
   run.JoinEnds();
+  run.RemoveSpurs();
+  run.CollapseShortLinks();
   run.RemoveSpurs();
   run.SplitAtCorners();
   const std::vector<Chain> chains = run.ExtractChains();
