@@ -51,6 +51,7 @@ constexpr double AssignRadius = 3.0;    // s: feature points this close to a cur
 const double CornerTurn = std::cos(45.0 * Pi / 180.0); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
 const double BridgeCone = std::cos(30.0 * Pi / 180.0); // an end joins what lies in this cone
+const double FacingCone = std::cos(15.0 * Pi / 180.0); // ends facing each other within this
 constexpr int SmoothingPasses = 20;
 constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's points
 constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
@@ -362,7 +363,7 @@ void CurveRun::SelectPoints(
         normal.setZero();
       }
     }
-    if (feature && type != CORNER)
+    if (feature)
     {
       this->TraceIndex.push_back(static_cast<vtkIdType>(this->Points.size()));
       this->TracePoints.push_back(x);
@@ -399,7 +400,7 @@ void CurveRun::OrderSeeds()
   }
   for (vtkIdType i = 0; i < n; ++i)
   {
-    if (flatness[i] <= MaxFlatness)
+    if (flatness[i] <= MaxFlatness && this->Type[this->TraceIndex[i]] != CORNER)
     {
       this->Seeds.push_back(i);
     }
@@ -730,7 +731,11 @@ void CurveRun::JoinEnds()
     {
       const V3 ab = this->G.Vertices[ends[b]] - this->G.Vertices[ends[a]];
       const double distance = ab.norm();
-      if (distance > this->J || ab.dot(directions[a]) < 0.0 || -ab.dot(directions[b]) < 0.0)
+      // Two ends that face each other along one line are bridged from twice as far.
+      const bool facing = ab.dot(directions[a]) >= FacingCone * distance &&
+        -ab.dot(directions[b]) >= FacingCone * distance;
+      if (distance > (facing ? 2.0 : 1.0) * this->J || ab.dot(directions[a]) < 0.0 ||
+        -ab.dot(directions[b]) < 0.0)
       {
         continue;
       }
@@ -1449,7 +1454,7 @@ int vtkFeatureCurveExtraction::RequestData(
       {
         ids.push_back(linePoints->InsertNextPoint(x[k].data()));
       }
-      samples.push_back(x[k]);
+      samples.push_back(V3(linePoints->GetPoint(ids.back())));
       sampleCurve.push_back(static_cast<int>(c));
     }
     for (size_t k = 0; k < x.size(); ++k)
