@@ -25,7 +25,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <functional>
 #include <map>
 #include <numeric>
@@ -1254,7 +1253,7 @@ std::vector<std::vector<V3>> CurveRun::FitCurves(const std::vector<Chain>& chain
   }
   for (int v = 0; v < n; ++v)
   {
-    if (this->G.Degree(v) > 0 && !this->G.Node[v] && tangent[v].squaredNorm() > 0.0 && !std::getenv("FP_NOFIT"))
+    if (this->G.Degree(v) > 0 && !this->G.Node[v] && tangent[v].squaredNorm() > 0.0)
     {
       fitted[v] = this->FitSection(this->G.Vertices[v], tangent[v]);
     }

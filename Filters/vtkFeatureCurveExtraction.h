@@ -10,9 +10,10 @@
  * Every length below is in units of s, so the result does not depend on the cloud's units.
  *
  * The curves are built in stages:
- * 1. Tracing. The feature points that are not corners (FeatureType 3) are the trace points. From
- *    the most line-like of them not yet covered, a trace steps StepLength s at a time along the
- *    line fitted (PCA) to the trace points within FitRadius s, each new vertex projected across
+ * 1. Tracing. The feature points are the trace points. From the most line-like of them not yet
+ *    covered, corners (FeatureType 3) aside, a trace steps StepLength s at a time along the
+ *    line fitted (PCA) to the trace points within FitRadius s (1.5 FitRadius where that fit
+ *    fails), each new vertex projected across
  *    onto that line: the vertices follow the middle of the band of feature points, not the noisy
  *    points themselves. A trace stops where no trace point lies ahead (an end), where the fit turns
  *    by more than 35 degrees in a step or stops being line-like (a corner, a junction), or where it
@@ -20,14 +21,17 @@
  *    continuation of the same curve).
  * 2. Joining. Ends within JoinDistance s of each other meet at the point nearest to the lines they
  *    point along (a corner, where three or more curves meet, or two borders at an angle); two ends
- *    that point at each other are bridged; an end pointing at another curve within that distance
- *    joins it.
+ *    that point at each other are bridged (from up to twice that distance when they face each
+ *    other within 15 degrees); an end pointing at another curve within JoinDistance joins it.
+ *    Curves shorter than JoinDistance between two junctions (a corner traced round as well as
+ *    along its edges) collapse into one corner.
  * 3. Cleaning. Branches shorter than MinimumLength s that end freely (spurs), and pieces shorter
  *    than that, are removed; curves are split where they turn by more than 45 degrees within
  *    about 3 s (a corner that a trace went round).
  * 4. Fitting. Each vertex is moved onto the feature as the cloud around it defines it: across a
  *    crease, to the intersection of the two faces' lines fitted to the cross-section of all points
- *    within FitRadius s; on a border, to the edge of the one face (the points' distribution across
+ *    within 1.5 FitRadius s (and 0.75 FitRadius s along the curve), the faces told apart by their
+ *    normals, then as k-means with lines; on a border, to the edge of the one face (the points' distribution across
  *    the edge tells where it lies). Then the vertices are smoothed along the curve (ends fixed) and
  *    resampled StepLength s apart.
  *
