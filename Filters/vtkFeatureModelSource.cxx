@@ -1,6 +1,9 @@
 #include "vtkFeatureModelSource.h"
 
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkIntArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -275,6 +278,32 @@ struct Curve
   Vec A, B;
   double R = 0;
   unsigned char Type = vtkFeatureModelSource::CONVEX_CREASE;
+  // The part of a circle that is a feature, for the true curves only: azimuths 0 to Sweep (the
+  // distances use the whole circle, see HALF_CYLINDER).
+  double Sweep = 2.0 * Pi;
+
+  // Points along the curve no more than `step` apart, ends included (a whole circle closes on
+  // its first point).
+  std::vector<Vec> Sample(double step) const
+  {
+    const double length = this->Circle ? this->Sweep * this->R : Norm(this->B - this->A);
+    const int segments = std::max(1, static_cast<int>(std::ceil(length / step)));
+    std::vector<Vec> points;
+    for (int k = 0; k <= segments; ++k)
+    {
+      const double t = static_cast<double>(k) / segments;
+      if (this->Circle)
+      {
+        const double a = t * this->Sweep;
+        points.push_back(this->A + Vec{ this->R * std::cos(a), this->R * std::sin(a), 0.0 });
+      }
+      else
+      {
+        points.push_back(this->A + t * (this->B - this->A));
+      }
+    }
+    return points;
+  }
 
   double Distance(const Vec& p) const
   {
@@ -547,6 +576,7 @@ Geometry MakeGeometry(int model, double size, double valleySlope, double separat
       for (const double z : { -h, h })
       {
         g.Curves.push_back(Circle(Vec{ 0.0, 0.0, z }, r, vtkFeatureModelSource::BORDER));
+        g.Curves.back().Sweep = Pi;
       }
       for (const double x : { -r, r })
       {
@@ -594,6 +624,43 @@ Geometry MakeGeometry(int model, double size, double valleySlope, double separat
   }
 }
 
+// The exact feature curves of output port 1: one polyline per curve, a vertex at most every `step`,
+// moved by `center`.
+void MakeFeatureCurves(const Geometry& geometry, double step, const double center[3],
+  vtkPolyData* curves)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkUnsignedCharArray> types;
+  types->SetName("FeatureType");
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("CurveId");
+  for (const Curve& c : geometry.Curves)
+  {
+    const std::vector<Vec> samples = c.Sample(step);
+    const bool closed = c.Circle && c.Sweep >= 2.0 * Pi;
+    const vtkIdType first = points->GetNumberOfPoints();
+    const size_t count = closed ? samples.size() - 1 : samples.size();
+    lines->InsertNextCell(static_cast<vtkIdType>(closed ? count + 1 : count));
+    for (size_t k = 0; k < count; ++k)
+    {
+      lines->InsertCellPoint(points->InsertNextPoint(samples[k].X + center[0],
+        samples[k].Y + center[1], samples[k].Z + center[2]));
+    }
+    if (closed)
+    {
+      lines->InsertCellPoint(first);
+    }
+    types->InsertNextValue(c.Type);
+    ids->InsertNextValue(static_cast<int>(ids->GetNumberOfTuples()));
+  }
+  curves->SetPoints(points);
+  curves->SetLines(lines);
+  curves->GetCellData()->AddArray(ids);
+  curves->GetCellData()->AddArray(types);
+}
+
 // The length L = F x, F = FeatureSeparation, that PARALLEL_CREASES and THIN_PLATE are built with,
 // where x is the nominal spacing sqrt(area / n) of the model so built. Their area is affine in L
 // (the ribs' walls, the plate's rim; below the ribs' cap), area = A0 + A1 L, so x is the positive
@@ -613,6 +680,12 @@ double SeparationLength(int model, double size, vtkIdType n, double factor)
 vtkFeatureModelSource::vtkFeatureModelSource()
 {
   this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkPolyData* vtkFeatureModelSource::GetFeatureCurves()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
 vtkFeatureModelSource::~vtkFeatureModelSource() = default;
@@ -784,8 +857,15 @@ int vtkFeatureModelSource::RequestData(
   noise->InsertNextValue(sigma);
   output->GetFieldData()->AddArray(spacing);
   output->GetFieldData()->AddArray(noise);
+
+  vtkPolyData* curves = vtkPolyData::GetData(outputVector, 1);
+  if (curves)
+  {
+    MakeFeatureCurves(geometry, s > 0.0 ? 0.25 * s : 1e-3 * this->Size, this->Center, curves);
+  }
   return 1;
 }
+
 
 void vtkFeatureModelSource::PrintSelf(ostream& os, vtkIndent indent)
 {

@@ -90,6 +90,11 @@
  *   are each): it is called CONVEX_CREASE.
  * and the field data `CleanMeanSpacing` (s) and `NoiseSigma`.
  *
+ * Output port 1 (GetFeatureCurves()): the exact feature curves, one polyline each, vertices no
+ * more than s / 4 apart (a circle closes on its first vertex; HALF_CYLINDER's borders are half
+ * circles), with the cell arrays `CurveId` (0, 1, ...) and `FeatureType` (as GroundTruthType).
+ * The corners are the curves' shared end points. Models without features give no line.
+ *
  * @sa vtkFeaturePointEvaluation vtkFeaturePointExtraction
  */
 #ifndef vtkFeatureModelSource_h
@@ -220,6 +225,9 @@ public:
   vtkSetClampMacro(FeatureSeparation, double, 0.1, 1000.0);
   vtkGetMacro(FeatureSeparation, double);
   ///@}
+
+  /** The exact feature curves of the last update (output port 1; see the class comment). */
+  vtkPolyData* GetFeatureCurves();
 
   ///@{
   /** vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION (default) output points. */

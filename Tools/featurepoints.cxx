@@ -11,6 +11,7 @@
 #include "vtkCommand.h"
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
+#include "vtkFeatureCurveExtraction.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
@@ -35,6 +36,8 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersion.h"
 #include "vtkWindowToImageFilter.h"
+
+#include "featurepointsLines.h"
 
 #include <algorithm>
 #include <chrono>
@@ -457,6 +460,11 @@ void PrintHelp()
     "                        (array vtkOriginalPointIds)\n"
     "  --screenshot FILE.png render the result offscreen: points coloured by the score, feature\n"
     "                        points in red (Debian's VTK needs an X display: use xvfb-run -a)\n"
+    "  --lines FILE          also find the feature curves (polylines through the feature\n"
+    "                        points) and write them: .vtp, .vtk (cell arrays CurveId,\n"
+    "                        FeatureType, CreaseAngle, Length; point array Tangent), .csv (one\n"
+    "                        line per vertex: x, y, z, CurveId, Tangent) or .obj (l lines);\n"
+    "                        the output gets CurveId, --screenshot draws the curves\n"
     "  --size WxH            picture size (default 1200x900)\n"
     "  --threads N           number of threads (default: all cores)\n"
     "  --quiet               print nothing but errors\n"
@@ -677,7 +685,7 @@ void AimCamera(vtkPolyData* cloud, vtkCamera* camera)
 // feature points in red and larger, camera fitted to the cloud.
 bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
   const std::string& captionText, int width, int height, const std::string& file,
-  std::string& error)
+  std::string& error, vtkPolyData* curves = nullptr)
 {
   auto* mask = vtkUnsignedCharArray::SafeDownCast(result->GetPointData()->GetArray("FeatureMask"));
   vtkNew<vtkPoints> featurePoints;
@@ -745,6 +753,20 @@ bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(cloudActor);
   renderer->AddActor(featureActor);
+  // The feature curves (--lines), drawn over the points.
+  vtkNew<vtkPolyDataMapper> curveMapper;
+  vtkNew<vtkActor> curveActor;
+  if (curves)
+  {
+    curveMapper->SetInputData(curves);
+    curveMapper->ScalarVisibilityOff();
+    curveMapper->SetResolveCoincidentTopologyToPolygonOffset();
+    curveActor->SetMapper(curveMapper);
+    curveActor->GetProperty()->SetColor(0.0, 0.0, 0.0);
+    curveActor->GetProperty()->SetLineWidth(3.0);
+    curveActor->GetProperty()->LightingOff();
+    renderer->AddActor(curveActor);
+  }
   renderer->AddActor2D(bar);
   renderer->AddActor2D(caption);
   renderer->SetBackground(1.0, 1.0, 1.0);
@@ -776,6 +798,7 @@ bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
 struct Settings
 {
   std::string Input, Output, Screenshot;
+  std::string Lines; // --lines: the feature curves' file
   std::string MethodName = DefaultMethod;
   std::vector<std::pair<const FilterOption*, double>> FilterValues;
   bool FeaturesOnly = false;
@@ -889,6 +912,15 @@ Settings ParseArguments(int argc, char* argv[])
       {
         Fail(ExitUsage, "--screenshot writes a PNG file: '" + s.Screenshot +
             "' does not end in .png");
+      }
+    }
+    else if (name == "lines")
+    {
+      s.Lines = takeValue();
+      if (!featurepoints::CanWriteLines(vtkPointCloudIO::GetExtension(s.Lines)))
+      {
+        Fail(ExitUsage, "--lines writes " + featurepoints::GetLinesExtensions() + ": '" + s.Lines +
+            "' ends in none of them");
       }
     }
     else if (name == "size")
@@ -1019,10 +1051,17 @@ int main(int argc, char* argv[])
   {
     Fail(ExitUsage, s.Screenshot + ": the picture cannot replace the input or the output");
   }
+  if (!s.Lines.empty() &&
+    (SameFile(s.Lines, s.Input) || SameFile(s.Lines, s.Output) || s.Lines == s.Input ||
+      s.Lines == s.Output || s.Lines == s.Screenshot))
+  {
+    Fail(ExitUsage, s.Lines + ": the curves cannot replace the input, the output or the picture");
+  }
   // Fail before the work, not after it: unwritable targets, no display to render with.
   std::string error;
   if (!vtkPointCloudIO::CanCreate(s.Output, error) ||
-    (!s.Screenshot.empty() && !vtkPointCloudIO::CanCreate(s.Screenshot, error)))
+    (!s.Screenshot.empty() && !vtkPointCloudIO::CanCreate(s.Screenshot, error)) ||
+    (!s.Lines.empty() && !vtkPointCloudIO::CanCreate(s.Lines, error)))
   {
     Fail(ExitFailure, error);
   }
@@ -1106,6 +1145,19 @@ int main(int argc, char* argv[])
   vtkPolyData* result = filter->GetOutput();
   const double grown = method->GrowThreshold ? method->GrowThreshold(filter) : std::nan("");
 
+  // Curves (--lines): the output gets CurveId.
+  vtkNew<vtkFeatureCurveExtraction> curves;
+  if (!s.Lines.empty())
+  {
+    progress->Stage("curves");
+    start = Clock::now();
+    curves->SetInputData(result);
+    curves->Update();
+    progress->Finish();
+    times.emplace_back("curves", Seconds(start));
+    result = curves->GetOutput();
+  }
+
   // Picture (into a temporary file: renamed only once the output is written too).
   std::string pictureTemporary;
   if (!s.Screenshot.empty())
@@ -1126,8 +1178,13 @@ int main(int argc, char* argv[])
     {
       caption << ", grown through > " << grown;
     }
+    if (!s.Lines.empty())
+    {
+      caption << "; " << curves->GetNumberOfCurves() << " curves (black)";
+    }
     if (!RenderPicture(result, filter->GetScoreArrayName(), filter->GetThresholdUsed(),
-          caption.str(), s.Width, s.Height, pictureTemporary, error))
+          caption.str(), s.Width, s.Height, pictureTemporary, error,
+          s.Lines.empty() ? nullptr : curves->GetCurves()))
     {
       RemoveTemporaries(0);
       Fail(ExitFailure, s.Screenshot + ": " + error);
@@ -1150,6 +1207,13 @@ int main(int argc, char* argv[])
   {
     progress->Finish();
     RemoveTemporaries(0);
+    Fail(ExitFailure, error);
+  }
+  if (!s.Lines.empty() && !featurepoints::WriteLines(curves->GetCurves(), s.Lines, error))
+  {
+    progress->Finish();
+    RemoveTemporaries(0);
+    std::remove(s.Output.c_str()); // a failed run leaves no output behind
     Fail(ExitFailure, error);
   }
   progress->Finish();
@@ -1201,6 +1265,12 @@ int main(int argc, char* argv[])
         counts[vtkCreaseVotingFeatures::CORNER], counts[vtkCreaseVotingFeatures::BORDER]);
     }
     std::printf("output      %s%s\n", s.Output.c_str(), s.FeaturesOnly ? " (feature points only)" : "");
+    if (!s.Lines.empty())
+    {
+      std::printf("curves      %lld, total length %.6g (%s)\n",
+        static_cast<long long>(curves->GetNumberOfCurves()), curves->GetTotalLength(),
+        s.Lines.c_str());
+    }
     if (!s.Screenshot.empty())
     {
       std::printf("picture     %s (%dx%d)\n", s.Screenshot.c_str(), s.Width, s.Height);

@@ -1,0 +1,1552 @@
+#include "vtkFeatureCurveExtraction.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointCloudNeighborhoods.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <set>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkFeatureCurveExtraction);
+
+namespace
+{
+using V3 = Eigen::Vector3d;
+constexpr double Pi = 3.14159265358979323846;
+
+// Shape constants: angles and ratios. Lengths are parameters, in mean spacings.
+const double MaxTurnPerStep = std::cos(35.0 * Pi / 180.0); // a trace stops at a sharper turn
+constexpr double MaxFlatness = 0.6;   // lambda2 / lambda1 of a line fit above this: not a line
+constexpr int MinFitPoints = 4;       // fewer trace points in a fit: nothing to follow
+constexpr double CollisionRadius = 1.5; // s: a trace joins a vertex of another this close
+constexpr double CoverRadius = 2.5;     // s: trace points this close to a vertex seed no trace
+constexpr double AssignRadius = 3.0;    // s: feature points this close to a curve get its id
+const double CornerTurn = std::cos(45.0 * Pi / 180.0); // a sharper turn within CornerWindow splits
+constexpr double CornerWindow = 3.0;    // s
+const double BridgeCone = std::cos(30.0 * Pi / 180.0); // an end joins what lies in this cone
+const double FacingCone = std::cos(15.0 * Pi / 180.0); // ends facing each other within this
+constexpr int SmoothingPasses = 20;
+constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's points
+constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
+constexpr double SectionCore = 1.0; // s: points this near the vertex do not fit the faces' lines
+const double MinimumCreaseAngle = std::sin(10.0 * Pi / 180.0); // flatter faces: no intersection
+
+enum Types
+{
+  NONE = 0,
+  CONVEX = 1,
+  CONCAVE = 2,
+  CORNER = 3,
+  BORDER = 4,
+};
+
+// Radius queries over a fixed set of points (serial).
+class PointSearch
+{
+public:
+  void Build(const std::vector<V3>& points)
+  {
+    this->Count = static_cast<vtkIdType>(points.size());
+    vtkNew<vtkPoints> p;
+    p->SetDataTypeToDouble();
+    p->SetNumberOfPoints(this->Count);
+    for (vtkIdType i = 0; i < this->Count; ++i)
+    {
+      p->SetPoint(i, points[i].data());
+    }
+    this->Data->SetPoints(p);
+    if (this->Count > 0)
+    {
+      this->Locator->SetDataSet(this->Data);
+      this->Locator->BuildLocator();
+    }
+  }
+  void Within(const V3& x, double r, std::vector<vtkIdType>& out) const
+  {
+    out.clear();
+    if (this->Count == 0)
+    {
+      return;
+    }
+    this->Locator->FindPointsWithinRadius(r, x.data(), this->Ids);
+    out.assign(this->Ids->begin(), this->Ids->end());
+    std::sort(out.begin(), out.end()); // the same sums whatever the locator's order
+  }
+  vtkIdType Nearest(const V3& x) const
+  {
+    return this->Count ? this->Locator->FindClosestPoint(x.data()) : -1;
+  }
+
+private:
+  vtkIdType Count = 0;
+  vtkNew<vtkPolyData> Data;
+  vtkNew<vtkStaticPointLocator> Locator;
+  vtkNew<vtkIdList> Ids;
+};
+
+struct LineFit
+{
+  V3 Centroid = V3::Zero();
+  V3 Direction = V3::Zero();
+  int Count = 0;
+  double Flatness = 1.0; // lambda2 / lambda1
+};
+
+// PCA line through the listed points (coordinates taken relative to `origin`).
+LineFit FitLine(const std::vector<V3>& points, const std::vector<vtkIdType>& ids, const V3& origin)
+{
+  LineFit fit;
+  fit.Count = static_cast<int>(ids.size());
+  if (fit.Count < 2)
+  {
+    return fit;
+  }
+  V3 mean = V3::Zero();
+  for (vtkIdType i : ids)
+  {
+    mean += points[i] - origin;
+  }
+  mean /= fit.Count;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (vtkIdType i : ids)
+  {
+    const V3 v = points[i] - origin - mean;
+    cov += v * v.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov / fit.Count);
+  const V3 values = solver.eigenvalues();
+  fit.Centroid = origin + mean;
+  fit.Direction = solver.eigenvectors().col(2).normalized();
+  fit.Flatness = values[2] > 0.0 ? std::max(values[1], 0.0) / values[2] : 1.0;
+  return fit;
+}
+
+V3 ProjectOnLine(const V3& x, const LineFit& f)
+{
+  return f.Centroid + (x - f.Centroid).dot(f.Direction) * f.Direction;
+}
+
+// The point nearest to lines through `points` along `directions` (least squares); false when the
+// lines are (nearly) parallel.
+bool NearestToLines(const std::vector<V3>& points, const std::vector<V3>& directions, V3& result)
+{
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  V3 b = V3::Zero();
+  const V3 origin = points[0];
+  for (size_t k = 0; k < points.size(); ++k)
+  {
+    const Eigen::Matrix3d m = Eigen::Matrix3d::Identity() - directions[k] * directions[k].transpose();
+    a += m;
+    b += m * (points[k] - origin);
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a);
+  if (solver.eigenvalues()[0] < 0.05 * static_cast<double>(points.size()))
+  {
+    return false;
+  }
+  result = origin + a.ldlt().solve(b);
+  return result.allFinite();
+}
+
+// The curves' graph: vertices, undirected edges, and the vertices that must end curves.
+struct Graph
+{
+  std::vector<V3> Vertices;
+  std::vector<std::vector<int>> Adjacent;
+  std::vector<unsigned char> Node; // forced end of curves (a corner)
+
+  int Add(const V3& x, bool node = false)
+  {
+    this->Vertices.push_back(x);
+    this->Adjacent.emplace_back();
+    this->Node.push_back(node ? 1 : 0);
+    return static_cast<int>(this->Vertices.size()) - 1;
+  }
+  void Link(int a, int b)
+  {
+    if (a == b || std::find(this->Adjacent[a].begin(), this->Adjacent[a].end(), b) !=
+        this->Adjacent[a].end())
+    {
+      return;
+    }
+    this->Adjacent[a].push_back(b);
+    this->Adjacent[b].push_back(a);
+  }
+  void Unlink(int a, int b)
+  {
+    auto& la = this->Adjacent[a];
+    auto& lb = this->Adjacent[b];
+    la.erase(std::remove(la.begin(), la.end(), b), la.end());
+    lb.erase(std::remove(lb.begin(), lb.end(), a), lb.end());
+  }
+  int Degree(int a) const { return static_cast<int>(this->Adjacent[a].size()); }
+  bool IsEnd(int a) const { return this->Degree(a) != 2 || this->Node[a]; }
+};
+
+// A curve of the graph: vertex ids from end to end (a closed one repeats its first id last).
+struct Chain
+{
+  std::vector<int> Ids;
+  bool Closed = false;
+};
+
+// Vertices of the traces by grid cell, for the "does a trace come near another" test.
+class VertexHash
+{
+public:
+  explicit VertexHash(double cell)
+    : Cell(cell)
+  {
+  }
+  void Insert(int id, const V3& x) { this->Cells[this->Key(x, 0, 0, 0)].push_back(id); }
+  template <typename Accept>
+  int Nearest(const V3& x, double radius, const std::vector<V3>& vertices, Accept accept) const
+  {
+    int best = -1;
+    double bestDistance = radius * radius;
+    for (int i = -1; i <= 1; ++i)
+    {
+      for (int j = -1; j <= 1; ++j)
+      {
+        for (int k = -1; k <= 1; ++k)
+        {
+          const auto found = this->Cells.find(this->Key(x, i, j, k));
+          if (found == this->Cells.end())
+          {
+            continue;
+          }
+          for (int v : found->second)
+          {
+            const double d = (vertices[v] - x).squaredNorm();
+            if (d <= bestDistance && accept(v) && (best < 0 || d < bestDistance || v < best))
+            {
+              best = v;
+              bestDistance = d;
+            }
+          }
+        }
+      }
+    }
+    return best;
+  }
+
+private:
+  int64_t Key(const V3& x, int i, int j, int k) const
+  {
+    const int64_t a = static_cast<int64_t>(std::floor(x[0] / this->Cell)) + i;
+    const int64_t b = static_cast<int64_t>(std::floor(x[1] / this->Cell)) + j;
+    const int64_t c = static_cast<int64_t>(std::floor(x[2] / this->Cell)) + k;
+    return (a * 73856093) ^ (b * 19349663) ^ (c * 83492791);
+  }
+  double Cell;
+  std::unordered_map<int64_t, std::vector<int>> Cells;
+};
+
+// One run of the filter: the stages of the class comment, in order.
+class CurveRun
+{
+public:
+  CurveRun(double s, double fitRadius, double step, double join, double minimumLength)
+    : S(s)
+    , R(fitRadius * s)
+    , H(step * s)
+    , J(join * s)
+    , MinimumLength(minimumLength * s)
+    , Hash(CollisionRadius * s)
+  {
+  }
+
+  // Reads the cloud: all valid points, the feature points and the trace points among them.
+  void SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray* types,
+    vtkDataArray* normals);
+  // Line-likeness of each trace point's neighbourhood, and the seeding order.
+  void OrderSeeds();
+  // Stage 1: traces from every uncovered seed.
+  void TraceAll();
+  // Stage 2: corners, bridges and ends that point at a curve.
+  void JoinEnds();
+  // Stage 3: spurs and short pieces out, splits where a curve turns sharply.
+  void RemoveSpurs();
+  void SplitAtCorners();
+  // Short curves between two junctions (a corner traced round as well as along its edges) are
+  // collapsed into one corner.
+  void CollapseShortLinks();
+  // The curves of the graph.
+  std::vector<Chain> ExtractChains() const;
+  // Stage 4: vertices onto the cross-section's fit, smoothed, resampled.
+  std::vector<std::vector<V3>> FitCurves(const std::vector<Chain>& chains);
+
+  double S, R, H, J, MinimumLength;
+  std::vector<V3> Points;           // all valid points
+  std::vector<vtkIdType> PointIds;  // their input ids
+  std::vector<V3> Normals;          // zero when the input has none
+  std::vector<unsigned char> Type;  // FeatureType of the valid points (CONVEX when unknown)
+  std::vector<unsigned char> Feature; // mask of the valid points
+  std::vector<V3> TracePoints;
+  std::vector<vtkIdType> TraceIndex; // index in Points of each trace point
+  PointSearch AllSearch, TraceSearch;
+
+private:
+  LineFit FitAt(const V3& x, std::vector<vtkIdType>& ids) const;
+  void TraceFrom(vtkIdType seed, int trace);
+  void Walk(int start, V3 x, V3 d, int trace, int sign);
+  void Cover(const V3& x);
+  int NearbyEnd(int v, int steps) const;
+  V3 EndDirection(int end) const;
+  std::vector<int> Components() const;
+  V3 FitSection(const V3& x, const V3& t) const;
+  V3 FitCrease(const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids) const;
+  V3 FitBorder(const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids) const;
+  unsigned char LocalType(const V3& x) const;
+  void RefitCorners(const std::vector<Chain>& chains, std::vector<std::vector<V3>>& curves) const;
+
+  std::vector<vtkIdType> Seeds;
+  std::vector<unsigned char> Covered;
+  Graph G;
+  VertexHash Hash;
+  std::vector<int> TraceOf, ArcOf; // per graph vertex
+  mutable std::vector<vtkIdType> Scratch;
+};
+
+void CurveRun::SelectPoints(
+  vtkPointSet* input, vtkDataArray* mask, vtkDataArray* types, vtkDataArray* normals)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    V3 x;
+    input->GetPoint(i, x.data());
+    if (!x.allFinite())
+    {
+      continue;
+    }
+    const bool feature = mask->GetTuple1(i) != 0.0;
+    unsigned char type = feature ? CONVEX : NONE;
+    if (feature && types)
+    {
+      const double t = types->GetTuple1(i);
+      type = (t == CONCAVE || t == CORNER || t == BORDER) ? static_cast<unsigned char>(t) : CONVEX;
+    }
+    V3 normal = V3::Zero();
+    if (normals)
+    {
+      normals->GetTuple(i, normal.data());
+      if (!normal.allFinite())
+      {
+        normal.setZero();
+      }
+    }
+    if (feature)
+    {
+      this->TraceIndex.push_back(static_cast<vtkIdType>(this->Points.size()));
+      this->TracePoints.push_back(x);
+    }
+    this->Points.push_back(x);
+    this->PointIds.push_back(i);
+    this->Normals.push_back(normal);
+    this->Type.push_back(type);
+    this->Feature.push_back(feature ? 1 : 0);
+  }
+  this->AllSearch.Build(this->Points);
+  this->TraceSearch.Build(this->TracePoints);
+  this->Covered.assign(this->TracePoints.size(), 0);
+}
+
+LineFit CurveRun::FitAt(const V3& x, std::vector<vtkIdType>& ids) const
+{
+  this->TraceSearch.Within(x, this->R, ids);
+  return FitLine(this->TracePoints, ids, x);
+}
+
+void CurveRun::OrderSeeds()
+{
+  const vtkIdType n = static_cast<vtkIdType>(this->TracePoints.size());
+  std::vector<double> flatness(n, 1.0);
+  std::vector<vtkIdType> ids;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const LineFit f = this->FitAt(this->TracePoints[i], ids);
+    if (f.Count >= MinFitPoints)
+    {
+      flatness[i] = f.Flatness;
+    }
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (flatness[i] <= MaxFlatness && this->Type[this->TraceIndex[i]] != CORNER)
+    {
+      this->Seeds.push_back(i);
+    }
+  }
+  std::stable_sort(this->Seeds.begin(), this->Seeds.end(),
+    [&](vtkIdType a, vtkIdType b) { return flatness[a] < flatness[b]; });
+}
+
+void CurveRun::Cover(const V3& x)
+{
+  this->TraceSearch.Within(x, CoverRadius * this->S, this->Scratch);
+  for (vtkIdType i : this->Scratch)
+  {
+    this->Covered[i] = 1;
+  }
+}
+
+void CurveRun::TraceAll()
+{
+  int trace = 0;
+  for (vtkIdType seed : this->Seeds)
+  {
+    if (!this->Covered[seed])
+    {
+      this->TraceFrom(seed, trace++);
+    }
+  }
+}
+
+void CurveRun::TraceFrom(vtkIdType seed, int trace)
+{
+  this->Covered[seed] = 1;
+  std::vector<vtkIdType> ids;
+  V3 x = this->TracePoints[seed];
+  LineFit f = this->FitAt(x, ids);
+  for (int round = 0; round < 2 && f.Count >= MinFitPoints; ++round)
+  {
+    x = ProjectOnLine(x, f);
+    f = this->FitAt(x, ids);
+  }
+  if (f.Count < MinFitPoints || f.Flatness > MaxFlatness)
+  {
+    return;
+  }
+  x = ProjectOnLine(x, f);
+  // Already traced: a vertex of another trace is near.
+  if (this->Hash.Nearest(x, CollisionRadius * this->S, this->G.Vertices, [](int) { return true; }) >= 0)
+  {
+    return;
+  }
+  const int start = this->G.Add(x);
+  this->TraceOf.push_back(trace);
+  this->ArcOf.push_back(0);
+  this->Hash.Insert(start, x);
+  this->Cover(x);
+  this->Walk(start, x, f.Direction, trace, 1);
+  this->Walk(start, x, -f.Direction, trace, -1);
+}
+
+void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
+{
+  // Vertices of the same trace closer than this along it are its own neighbourhood, not a loop.
+  const int ownReach = static_cast<int>(std::ceil(2.0 * this->R / this->H)) + 2;
+  std::vector<vtkIdType> ids;
+  int previous = start;
+  const size_t maxSteps = 4 * this->TracePoints.size() + 16;
+  for (size_t step = 1; step <= maxSteps; ++step)
+  {
+    V3 y = x + this->H * d;
+    // The fit at y; where the trace points are sparse or noisy, again over a wider ball.
+    LineFit f;
+    V3 t;
+    bool found = false;
+    for (const double radius : { this->R, 1.5 * this->R })
+    {
+      this->TraceSearch.Within(y, radius, ids);
+      f = FitLine(this->TracePoints, ids, y);
+      int ahead = 0;
+      for (vtkIdType i : ids)
+      {
+        ahead += (this->TracePoints[i] - x).dot(d) > 0.5 * this->H;
+      }
+      t = f.Direction.dot(d) >= 0.0 ? f.Direction : V3(-f.Direction);
+      if (ahead >= 2 && f.Count >= MinFitPoints && f.Flatness <= MaxFlatness &&
+        t.dot(d) >= MaxTurnPerStep)
+      {
+        found = true;
+        break;
+      }
+      if (ahead < 2 && radius == this->R)
+      {
+        break; // an end: nothing ahead
+      }
+    }
+    if (!found)
+    {
+      return;
+    }
+    y = ProjectOnLine(y, f);
+    if ((y - x).norm() < 0.25 * this->H)
+    {
+      return; // stalled
+    }
+    const int arc = sign * static_cast<int>(step);
+    const int hit = this->Hash.Nearest(y, CollisionRadius * this->S, this->G.Vertices,
+      [&](int v) { return this->TraceOf[v] != trace || std::abs(this->ArcOf[v] - arc) > ownReach; });
+    if (hit >= 0)
+    {
+      this->G.Link(previous, this->NearbyEnd(hit, ownReach / 2));
+      return;
+    }
+    const int v = this->G.Add(y);
+    this->TraceOf.push_back(trace);
+    this->ArcOf.push_back(arc);
+    this->Hash.Insert(v, y);
+    this->G.Link(previous, v);
+    this->Cover(y);
+    previous = v;
+    x = y;
+    d = t;
+  }
+}
+
+int CurveRun::NearbyEnd(int v, int steps) const
+{
+  // Breadth-first along the curves: the nearest free end within `steps` edges, else v itself.
+  std::vector<std::pair<int, int>> queue{ { v, 0 } };
+  std::set<int> seen{ v };
+  for (size_t k = 0; k < queue.size(); ++k)
+  {
+    const int a = queue[k].first;
+    if (this->G.Degree(a) == 1)
+    {
+      return a;
+    }
+    if (queue[k].second >= steps)
+    {
+      continue;
+    }
+    for (int b : this->G.Adjacent[a])
+    {
+      if (seen.insert(b).second)
+      {
+        queue.emplace_back(b, queue[k].second + 1);
+      }
+    }
+  }
+  return v;
+}
+
+std::vector<Chain> CurveRun::ExtractChains() const
+{
+  std::vector<Chain> chains;
+  const int n = static_cast<int>(this->G.Vertices.size());
+  std::set<std::pair<int, int>> used;
+  auto edge = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  auto walk = [&](int from, int next, Chain& chain) {
+    chain.Ids = { from };
+    int previous = from, current = next;
+    used.insert(edge(from, next));
+    while (true)
+    {
+      chain.Ids.push_back(current);
+      if (this->G.IsEnd(current) || current == from)
+      {
+        break;
+      }
+      const auto& a = this->G.Adjacent[current];
+      const int following = a[0] == previous ? a[1] : a[0];
+      used.insert(edge(current, following));
+      previous = current;
+      current = following;
+    }
+    // A loop through a corner is a curve from the corner back to it, not a closed curve.
+    chain.Closed = chain.Ids.front() == chain.Ids.back() && !this->G.IsEnd(from);
+  };
+  for (int v = 0; v < n; ++v)
+  {
+    if (!this->G.IsEnd(v) || this->G.Degree(v) == 0)
+    {
+      continue;
+    }
+    for (int w : this->G.Adjacent[v])
+    {
+      if (!used.count(edge(v, w)))
+      {
+        Chain chain;
+        walk(v, w, chain);
+        chains.push_back(chain);
+      }
+    }
+  }
+  // Loops without an end.
+  for (int v = 0; v < n; ++v)
+  {
+    if (this->G.Degree(v) == 2 && !used.count(edge(v, this->G.Adjacent[v][0])))
+    {
+      Chain chain;
+      walk(v, this->G.Adjacent[v][0], chain);
+      chains.push_back(chain);
+    }
+  }
+  return chains;
+}
+
+double ChainLength(const Chain& chain, const std::vector<V3>& vertices)
+{
+  double length = 0.0;
+  for (size_t k = 1; k < chain.Ids.size(); ++k)
+  {
+    length += (vertices[chain.Ids[k]] - vertices[chain.Ids[k - 1]]).norm();
+  }
+  return length;
+}
+
+void CurveRun::RemoveSpurs()
+{
+  for (int round = 0; round < 4; ++round)
+  {
+    bool changed = false;
+    for (const Chain& chain : this->ExtractChains())
+    {
+      if (ChainLength(chain, this->G.Vertices) >= this->MinimumLength)
+      {
+        continue;
+      }
+      const bool freeStart = this->G.Degree(chain.Ids.front()) == 1;
+      const bool freeEnd = this->G.Degree(chain.Ids.back()) == 1;
+      // A short piece on its own, a short loop, or a short branch that ends freely.
+      if (chain.Closed || freeStart || freeEnd)
+      {
+        for (size_t k = 1; k < chain.Ids.size(); ++k)
+        {
+          this->G.Unlink(chain.Ids[k - 1], chain.Ids[k]);
+        }
+        changed = true;
+      }
+    }
+    // A vertex left with two curves is no longer a junction (unless a corner).
+    if (!changed)
+    {
+      return;
+    }
+  }
+}
+
+V3 CurveRun::EndDirection(int end) const
+{
+  // Back along the curve about CornerWindow, then the direction to the end.
+  int previous = end, current = this->G.Adjacent[end][0];
+  const int steps = std::max(1, static_cast<int>(std::lround(CornerWindow * this->S / this->H)));
+  for (int k = 1; k < steps && this->G.Degree(current) == 2 && !this->G.Node[current]; ++k)
+  {
+    const auto& a = this->G.Adjacent[current];
+    const int following = a[0] == previous ? a[1] : a[0];
+    previous = current;
+    current = following;
+  }
+  const V3 d = this->G.Vertices[end] - this->G.Vertices[current];
+  return d.norm() > 0.0 ? V3(d.normalized()) : V3(V3::Zero());
+}
+
+std::vector<int> CurveRun::Components() const
+{
+  const int n = static_cast<int>(this->G.Vertices.size());
+  std::vector<int> component(n, -1);
+  int count = 0;
+  for (int v = 0; v < n; ++v)
+  {
+    if (component[v] >= 0)
+    {
+      continue;
+    }
+    std::vector<int> stack{ v };
+    component[v] = count;
+    while (!stack.empty())
+    {
+      const int a = stack.back();
+      stack.pop_back();
+      for (int b : this->G.Adjacent[a])
+      {
+        if (component[b] < 0)
+        {
+          component[b] = count;
+          stack.push_back(b);
+        }
+      }
+    }
+    ++count;
+  }
+  return component;
+}
+
+void CurveRun::JoinEnds()
+{
+  const int n = static_cast<int>(this->G.Vertices.size());
+  std::vector<int> ends;
+  std::vector<V3> directions;
+  for (int v = 0; v < n; ++v)
+  {
+    if (this->G.Degree(v) == 1)
+    {
+      const V3 d = this->EndDirection(v);
+      if (d.squaredNorm() > 0.0)
+      {
+        ends.push_back(v);
+        directions.push_back(d);
+      }
+    }
+  }
+  const std::vector<int> component = this->Components();
+  std::vector<int> componentSize(n, 0);
+  for (int v = 0; v < n; ++v)
+  {
+    componentSize[component[v]] += this->G.Degree(v) > 0;
+  }
+  // Pairs of ends near each other, facing each other's side: clusters (union-find).
+  const size_t m = ends.size();
+  std::vector<size_t> parent(m);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::function<size_t(size_t)> root = [&](size_t a) {
+    return parent[a] == a ? a : parent[a] = root(parent[a]);
+  };
+  std::vector<unsigned char> paired(m, 0);
+  for (size_t a = 0; a < m; ++a)
+  {
+    for (size_t b = a + 1; b < m; ++b)
+    {
+      const V3 ab = this->G.Vertices[ends[b]] - this->G.Vertices[ends[a]];
+      const double distance = ab.norm();
+      // Two ends that face each other along one line are bridged from twice as far.
+      const bool facing = ab.dot(directions[a]) >= FacingCone * distance &&
+        -ab.dot(directions[b]) >= FacingCone * distance;
+      if (distance > (facing ? 2.0 : 1.0) * this->J || ab.dot(directions[a]) < 0.0 ||
+        -ab.dot(directions[b]) < 0.0)
+      {
+        continue;
+      }
+      // The two ends of one short piece are not a corner.
+      if (component[ends[a]] == component[ends[b]] &&
+        componentSize[component[ends[a]]] * this->H < 4.0 * this->J)
+      {
+        continue;
+      }
+      parent[root(a)] = root(b);
+      paired[a] = paired[b] = 1;
+    }
+  }
+  std::map<size_t, std::vector<size_t>> clusters;
+  for (size_t a = 0; a < m; ++a)
+  {
+    if (paired[a])
+    {
+      clusters[root(a)].push_back(a);
+    }
+  }
+  for (const auto& entry : clusters)
+  {
+    const std::vector<size_t>& members = entry.second;
+    std::vector<V3> points, lines;
+    for (size_t a : members)
+    {
+      points.push_back(this->G.Vertices[ends[a]]);
+      lines.push_back(directions[a]);
+    }
+    if (members.size() == 2 && lines[0].dot(lines[1]) < -BridgeCone)
+    {
+      this->G.Link(ends[members[0]], ends[members[1]]); // a gap along one curve
+      continue;
+    }
+    V3 corner;
+    bool valid = NearestToLines(points, lines, corner);
+    for (size_t k = 0; valid && k < points.size(); ++k)
+    {
+      valid = (corner - points[k]).norm() <= this->J && (corner - points[k]).dot(lines[k]) > -this->H;
+    }
+    if (!valid)
+    {
+      corner = V3::Zero();
+      for (const V3& p : points)
+      {
+        corner += p;
+      }
+      corner /= static_cast<double>(points.size());
+    }
+    const int c = this->G.Add(corner, true);
+    for (size_t a : members)
+    {
+      this->G.Link(ends[a], c);
+    }
+  }
+  // Single ends that point at a curve nearby join it.
+  PointSearch vertices;
+  vertices.Build(this->G.Vertices);
+  std::vector<vtkIdType> near;
+  for (size_t a = 0; a < m; ++a)
+  {
+    if (paired[a])
+    {
+      continue;
+    }
+    const V3& x = this->G.Vertices[ends[a]];
+    vertices.Within(x, this->J, near);
+    int best = -1;
+    double bestDistance = 0.0;
+    for (vtkIdType v : near)
+    {
+      const V3 to = this->G.Vertices[v] - x;
+      const double distance = to.norm();
+      if (v == ends[a] || this->G.Degree(static_cast<int>(v)) == 0 || distance <= 0.0 ||
+        to.dot(directions[a]) < BridgeCone * distance ||
+        (component[v] == component[ends[a]] && componentSize[component[v]] * this->H < 4.0 * this->J))
+      {
+        continue;
+      }
+      if (best < 0 || distance < bestDistance)
+      {
+        best = static_cast<int>(v);
+        bestDistance = distance;
+      }
+    }
+    if (best >= 0)
+    {
+      this->G.Link(ends[a], best);
+    }
+  }
+}
+
+void CurveRun::CollapseShortLinks()
+{
+  for (int round = 0; round < 100000; ++round)
+  {
+    bool changed = false;
+    for (const Chain& chain : this->ExtractChains())
+    {
+      const int a = chain.Ids.front(), b = chain.Ids.back();
+      auto junction = [&](int v) { return this->G.Degree(v) >= 3 || this->G.Node[v]; };
+      if (chain.Closed || !junction(a) || !junction(b) ||
+        ChainLength(chain, this->G.Vertices) >= this->J)
+      {
+        continue;
+      }
+      for (size_t k = 1; k < chain.Ids.size(); ++k)
+      {
+        this->G.Unlink(chain.Ids[k - 1], chain.Ids[k]);
+      }
+      if (a != b)
+      {
+        const std::vector<int> moved = this->G.Adjacent[b];
+        for (int w : moved)
+        {
+          this->G.Unlink(b, w);
+          this->G.Link(a, w);
+        }
+        this->G.Vertices[a] = 0.5 * (this->G.Vertices[a] + this->G.Vertices[b]);
+      }
+      this->G.Node[a] = 1;
+      changed = true;
+      break; // the chains changed
+    }
+    if (!changed)
+    {
+      return;
+    }
+  }
+}
+
+void CurveRun::SplitAtCorners()
+{
+  const int w = std::max(1, static_cast<int>(std::lround(CornerWindow * this->S / this->H)));
+  for (const Chain& chain : this->ExtractChains())
+  {
+    const int count = static_cast<int>(chain.Ids.size()) - (chain.Closed ? 1 : 0);
+    if (count < 2 * w + 1)
+    {
+      continue;
+    }
+    auto at = [&](int k) -> const V3& {
+      if (chain.Closed)
+      {
+        k = ((k % count) + count) % count;
+      }
+      return this->G.Vertices[chain.Ids[k]];
+    };
+    std::vector<double> turn(count, 1.0);
+    const int first = chain.Closed ? 0 : w, last = chain.Closed ? count : count - w;
+    for (int k = first; k < last; ++k)
+    {
+      const V3 a = at(k) - at(k - w), b = at(k + w) - at(k);
+      if (a.norm() > 0.0 && b.norm() > 0.0)
+      {
+        turn[k] = a.normalized().dot(b.normalized());
+      }
+    }
+    for (int k = first; k < last; ++k)
+    {
+      bool sharpest = turn[k] < CornerTurn;
+      for (int j = k - w; sharpest && j <= k + w; ++j)
+      {
+        const int i = chain.Closed ? ((j % count) + count) % count : j;
+        if (i >= 0 && i < count && i != k && (turn[i] < turn[k] || (turn[i] == turn[k] && i < k)))
+        {
+          sharpest = false;
+        }
+      }
+      if (sharpest)
+      {
+        this->G.Node[chain.Ids[k]] = 1;
+      }
+    }
+  }
+}
+
+unsigned char CurveRun::LocalType(const V3& x) const
+{
+  this->AllSearch.Within(x, 2.0 * this->S, this->Scratch);
+  int counts[5] = { 0, 0, 0, 0, 0 };
+  for (vtkIdType i : this->Scratch)
+  {
+    ++counts[this->Type[i]];
+  }
+  return counts[BORDER] > counts[CONVEX] + counts[CONCAVE] ? BORDER : CONVEX;
+}
+
+V3 CurveRun::FitCrease(
+  const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids) const
+{
+  // The faces: points split by the direction in which their normals, seen along the curve, vary
+  // most; then one 2D line per face, and their intersection.
+  std::vector<Eigen::Vector2d> q, nq;
+  for (vtkIdType i : ids)
+  {
+    const V3 r = this->Points[i] - x;
+    const Eigen::Vector2d p(r.dot(e1), r.dot(e2));
+    const Eigen::Vector2d nn(this->Normals[i].dot(e1), this->Normals[i].dot(e2));
+    if (p.norm() >= SectionCore * this->S && nn.norm() > 0.0)
+    {
+      q.push_back(p);
+      nq.push_back(nn.normalized());
+    }
+  }
+  if (q.size() < 10)
+  {
+    return x;
+  }
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto& nn : nq)
+  {
+    mean += nn;
+  }
+  mean /= static_cast<double>(nq.size());
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const auto& nn : nq)
+  {
+    cov += (nn - mean) * (nn - mean).transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> split(cov);
+  const Eigen::Vector2d axis = split.eigenvectors().col(1);
+  Eigen::Vector2d c[2] = { Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero() };
+  int count[2] = { 0, 0 };
+  std::vector<int> side(q.size());
+  for (size_t k = 0; k < q.size(); ++k)
+  {
+    side[k] = (nq[k] - mean).dot(axis) >= 0.0 ? 1 : 0;
+  }
+  // Then, as k-means with lines, each point to the nearer line (the normals near the crease mix
+  // both faces'), until the split settles.
+  Eigen::Vector2d u[2];
+  for (int round = 0; round < 6; ++round)
+  {
+    for (int g = 0; g < 2; ++g)
+    {
+      Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
+      c[g] = Eigen::Vector2d::Zero();
+      count[g] = 0;
+      for (size_t k = 0; k < q.size(); ++k)
+      {
+        if (side[k] == g)
+        {
+          c[g] += q[k];
+          ++count[g];
+        }
+      }
+      if (count[g] < 5)
+      {
+        return x;
+      }
+      c[g] /= count[g];
+      for (size_t k = 0; k < q.size(); ++k)
+      {
+        if (side[k] == g)
+        {
+          m += (q[k] - c[g]) * (q[k] - c[g]).transpose();
+        }
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> line(m);
+      u[g] = line.eigenvectors().col(1);
+    }
+    bool changed = false;
+    for (size_t k = 0; k < q.size(); ++k)
+    {
+      const Eigen::Vector2d a = q[k] - c[0], b = q[k] - c[1];
+      const double da = std::abs(a[0] * u[0][1] - a[1] * u[0][0]);
+      const double db = std::abs(b[0] * u[1][1] - b[1] * u[1][0]);
+      const int g = da <= db ? 0 : 1;
+      changed = changed || g != side[k];
+      side[k] = g;
+    }
+    if (!changed)
+    {
+      break;
+    }
+  }
+  // c0 + a u0 = c1 + b u1
+  const double det = u[0][0] * (-u[1][1]) - u[0][1] * (-u[1][0]);
+  if (std::abs(det) < MinimumCreaseAngle)
+  {
+    return x;
+  }
+  const Eigen::Vector2d r = c[1] - c[0];
+  const double a = (r[0] * (-u[1][1]) - r[1] * (-u[1][0])) / det;
+  const Eigen::Vector2d p = c[0] + a * u[0];
+  if (!p.allFinite() || p.norm() > 2.0 * this->S)
+  {
+    return x;
+  }
+  return x + p[0] * e1 + p[1] * e2;
+}
+
+V3 CurveRun::FitBorder(
+  const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids) const
+{
+  // The face's line in the cross-section; along it, the points fill [b, ...) evenly: over a window
+  // [b, a0 + W] their mean is the window's middle, which gives b.
+  std::vector<Eigen::Vector2d> q;
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (vtkIdType i : ids)
+  {
+    const V3 r = this->Points[i] - x;
+    q.emplace_back(r.dot(e1), r.dot(e2));
+    c += q.back();
+  }
+  if (q.size() < 10)
+  {
+    return x;
+  }
+  c /= static_cast<double>(q.size());
+  Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
+  for (const auto& p : q)
+  {
+    m += (p - c) * (p - c).transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> line(m);
+  Eigen::Vector2d u = line.eigenvectors().col(1);
+  if (c.dot(u) < 0.0)
+  {
+    u = -u; // into the face
+  }
+  const double window = this->R;
+  double b = -c.dot(u); // the vertex, along the line
+  for (int round = 0; round < 3; ++round)
+  {
+    double sum = 0.0;
+    int count = 0;
+    for (const auto& p : q)
+    {
+      const double a = (p - c).dot(u);
+      if (a <= b + window)
+      {
+        sum += a;
+        ++count;
+      }
+    }
+    if (count < 5)
+    {
+      return x;
+    }
+    b = 2.0 * sum / count - (b + window);
+  }
+  const Eigen::Vector2d p = c + b * u;
+  if (!p.allFinite() || p.norm() > 2.0 * this->S)
+  {
+    return x;
+  }
+  return x + p[0] * e1 + p[1] * e2;
+}
+
+V3 CurveRun::FitSection(const V3& x, const V3& t) const
+{
+  // The slab of all points within 1.5 R of x and 0.75 R along the curve.
+  std::vector<vtkIdType> ids;
+  this->AllSearch.Within(x, SectionRadius * this->R, this->Scratch);
+  for (vtkIdType i : this->Scratch)
+  {
+    if (std::abs((this->Points[i] - x).dot(t)) <= SectionLength * this->R)
+    {
+      ids.push_back(i);
+    }
+  }
+  V3 e1 = t.unitOrthogonal();
+  V3 e2 = t.cross(e1);
+  return this->LocalType(x) == BORDER ? this->FitBorder(x, e1, e2, ids)
+                                      : this->FitCrease(x, e1, e2, ids);
+}
+
+void Smooth(std::vector<V3>& x, bool closed, int passes)
+{
+  const size_t n = x.size();
+  if (n < 3)
+  {
+    return;
+  }
+  for (int pass = 0; pass < passes; ++pass)
+  {
+    std::vector<V3> y = x;
+    for (size_t k = 0; k < n; ++k)
+    {
+      if (!closed && (k == 0 || k + 1 == n))
+      {
+        continue;
+      }
+      if (closed && k + 1 == n)
+      {
+        y[k] = y[0];
+        continue;
+      }
+      const V3& a = closed && k == 0 ? x[n - 2] : x[k - 1];
+      const V3& b = x[k + 1];
+      y[k] = 0.5 * x[k] + 0.25 * (a + b);
+    }
+    if (closed)
+    {
+      y[n - 1] = y[0];
+    }
+    x = y;
+  }
+}
+
+std::vector<V3> Resample(const std::vector<V3>& x, double step)
+{
+  std::vector<double> arc(x.size(), 0.0);
+  for (size_t k = 1; k < x.size(); ++k)
+  {
+    arc[k] = arc[k - 1] + (x[k] - x[k - 1]).norm();
+  }
+  const double length = arc.back();
+  const int segments = std::max(1, static_cast<int>(std::lround(length / step)));
+  std::vector<V3> y{ x.front() };
+  size_t j = 1;
+  for (int k = 1; k < segments; ++k)
+  {
+    const double a = length * k / segments;
+    while (j + 1 < x.size() && arc[j] < a)
+    {
+      ++j;
+    }
+    const double span = arc[j] - arc[j - 1];
+    const double f = span > 0.0 ? (a - arc[j - 1]) / span : 0.0;
+    y.push_back(x[j - 1] + f * (x[j] - x[j - 1]));
+  }
+  y.push_back(x.back());
+  return y;
+}
+
+void CurveRun::RefitCorners(
+  const std::vector<Chain>& chains, std::vector<std::vector<V3>>& curves) const
+{
+  // Each corner again, from the fitted curves: the point nearest to their end lines.
+  std::map<int, std::vector<std::pair<size_t, bool>>> atCorner; // vertex -> (curve, at its start)
+  for (size_t c = 0; c < chains.size(); ++c)
+  {
+    if (chains[c].Closed)
+    {
+      continue;
+    }
+    if (this->G.Node[chains[c].Ids.front()])
+    {
+      atCorner[chains[c].Ids.front()].emplace_back(c, true);
+    }
+    if (this->G.Node[chains[c].Ids.back()])
+    {
+      atCorner[chains[c].Ids.back()].emplace_back(c, false);
+    }
+  }
+  for (const auto& entry : atCorner)
+  {
+    std::vector<V3> points, lines;
+    for (const auto& end : entry.second)
+    {
+      const std::vector<V3>& x = curves[end.first];
+      // The stretch from 2 to 6 s from the corner.
+      std::vector<vtkIdType> ids;
+      std::vector<V3> stretch;
+      const V3 corner = end.second ? x.front() : x.back();
+      for (const V3& p : x)
+      {
+        const double d = (p - corner).norm();
+        if (d >= 2.0 * this->S && d <= 6.0 * this->S)
+        {
+          ids.push_back(static_cast<vtkIdType>(stretch.size()));
+          stretch.push_back(p);
+        }
+      }
+      if (ids.size() < 3)
+      {
+        continue;
+      }
+      const LineFit f = FitLine(stretch, ids, corner);
+      points.push_back(f.Centroid);
+      lines.push_back(f.Direction);
+    }
+    V3 corner;
+    if (points.size() < 2 || !NearestToLines(points, lines, corner))
+    {
+      continue;
+    }
+    bool near = true;
+    for (const auto& end : entry.second)
+    {
+      const std::vector<V3>& x = curves[end.first];
+      near = near && (corner - (end.second ? x.front() : x.back())).norm() <= 3.0 * this->S;
+    }
+    for (const auto& end : entry.second)
+    {
+      std::vector<V3>& x = curves[end.first];
+      (end.second ? x.front() : x.back()) = near ? corner : (end.second ? x.front() : x.back());
+    }
+  }
+}
+
+std::vector<std::vector<V3>> CurveRun::FitCurves(const std::vector<Chain>& chains)
+{
+  // Fitted positions of the graph's vertices: every vertex once, so that curves sharing an end
+  // still share it.
+  const int n = static_cast<int>(this->G.Vertices.size());
+  std::vector<V3> fitted = this->G.Vertices;
+  std::vector<V3> tangent(n, V3::Zero());
+  for (const Chain& chain : chains)
+  {
+    const int count = static_cast<int>(chain.Ids.size());
+    for (int k = 0; k < count; ++k)
+    {
+      const int a = chain.Ids[std::max(0, k - 2)];
+      const int b = chain.Ids[std::min(count - 1, k + 2)];
+      const V3 t = this->G.Vertices[b] - this->G.Vertices[a];
+      if (t.norm() > 0.0 && tangent[chain.Ids[k]].squaredNorm() == 0.0)
+      {
+        tangent[chain.Ids[k]] = t.normalized();
+      }
+    }
+  }
+  for (int v = 0; v < n; ++v)
+  {
+    if (this->G.Degree(v) > 0 && !this->G.Node[v] && tangent[v].squaredNorm() > 0.0)
+    {
+      fitted[v] = this->FitSection(this->G.Vertices[v], tangent[v]);
+    }
+  }
+  std::vector<std::vector<V3>> curves;
+  for (const Chain& chain : chains)
+  {
+    std::vector<V3> x;
+    for (int id : chain.Ids)
+    {
+      x.push_back(fitted[id]);
+    }
+    Smooth(x, chain.Closed, SmoothingPasses);
+    curves.push_back(x);
+  }
+  this->RefitCorners(chains, curves);
+  for (size_t c = 0; c < curves.size(); ++c)
+  {
+    Smooth(curves[c], chains[c].Closed, 1);
+    curves[c] = Resample(curves[c], this->H);
+  }
+  return curves;
+}
+} // namespace
+
+vtkFeatureCurveExtraction::vtkFeatureCurveExtraction()
+{
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkFeatureCurveExtraction::~vtkFeatureCurveExtraction() = default;
+
+vtkPolyData* vtkFeatureCurveExtraction::GetCurves()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+int vtkFeatureCurveExtraction::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+namespace
+{
+// The mean spacing: the detector's, else the points' own.
+double MeanSpacingOf(vtkPointSet* input)
+{
+  vtkDataArray* given = input->GetFieldData()->GetArray("MeanSpacing");
+  if (given && given->GetNumberOfTuples() > 0)
+  {
+    const double s = given->GetTuple1(0);
+    if (std::isfinite(s) && s > 0.0)
+    {
+      return s;
+    }
+  }
+  vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+  return input->GetNumberOfPoints() > 1 && neighborhoods->Build(input->GetPoints())
+    ? neighborhoods->ComputeMeanSpacing()
+    : 0.0;
+}
+
+// Output port 0: the input points with their arrays and vertex cells.
+void CopyPoints(vtkPointSet* input, vtkPolyData* output)
+{
+  vtkPolyData* poly = vtkPolyData::SafeDownCast(input);
+  if (poly)
+  {
+    output->ShallowCopy(poly);
+  }
+  else
+  {
+    output->SetPoints(input->GetPoints());
+    output->GetPointData()->ShallowCopy(input->GetPointData());
+    output->GetFieldData()->ShallowCopy(input->GetFieldData());
+  }
+  if (output->GetNumberOfCells() == 0 && input->GetNumberOfPoints() > 0)
+  {
+    output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(input->GetNumberOfPoints()));
+  }
+}
+} // namespace
+
+int vtkFeatureCurveExtraction::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* curvesOutput = vtkPolyData::GetData(outputVector, 1);
+  this->MeanSpacing = 0.0;
+  this->NumberOfCurves = 0;
+  this->TotalLength = 0.0;
+  if (!input || !output || !curvesOutput)
+  {
+    return 0;
+  }
+  vtkDataArray* mask = input->GetPointData()->GetArray("FeatureMask");
+  if (!mask && input->GetNumberOfPoints() > 0)
+  {
+    vtkErrorMacro("The input has no FeatureMask point array: give it a feature point detector's "
+                  "output (vtkCreaseVotingFeatures).");
+    return 0;
+  }
+  CopyPoints(input, output);
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkNew<vtkIntArray> curveIds;
+  curveIds->SetName("CurveId");
+  curveIds->SetNumberOfValues(n);
+  curveIds->FillValue(-1);
+  output->GetPointData()->AddArray(curveIds);
+
+  vtkNew<vtkPoints> linePoints;
+  linePoints->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIntArray> cellIds;
+  cellIds->SetName("CurveId");
+  vtkNew<vtkUnsignedCharArray> cellTypes;
+  cellTypes->SetName("FeatureType");
+  vtkNew<vtkFloatArray> cellAngles;
+  cellAngles->SetName("CreaseAngle");
+  vtkNew<vtkDoubleArray> cellLengths;
+  cellLengths->SetName("Length");
+  vtkNew<vtkFloatArray> tangents;
+  tangents->SetName("Tangent");
+  tangents->SetNumberOfComponents(3);
+  curvesOutput->SetPoints(linePoints);
+  curvesOutput->SetLines(lines);
+  curvesOutput->GetCellData()->AddArray(cellIds);
+  curvesOutput->GetCellData()->AddArray(cellTypes);
+  curvesOutput->GetCellData()->AddArray(cellAngles);
+  curvesOutput->GetCellData()->AddArray(cellLengths);
+  curvesOutput->GetPointData()->AddArray(tangents);
+  if (n == 0)
+  {
+    return 1;
+  }
+  const double s = MeanSpacingOf(input);
+  this->MeanSpacing = s;
+  if (!(s > 0.0))
+  {
+    vtkWarningMacro("No two points apart: no mean spacing, no curve.");
+    return 1;
+  }
+
+  CurveRun run(s, this->FitRadius, this->StepLength, this->JoinDistance, this->MinimumLength);
+  run.SelectPoints(input, mask, input->GetPointData()->GetArray("FeatureType"),
+    input->GetPointData()->GetArray("Normals"));
+  this->UpdateProgress(0.1);
+  run.OrderSeeds();
+  this->UpdateProgress(0.3);
+  run.TraceAll();
+  this->UpdateProgress(0.6);
+  run.RemoveSpurs();
+  run.JoinEnds();
+  run.RemoveSpurs();
+  run.CollapseShortLinks();
+  run.RemoveSpurs();
+  run.SplitAtCorners();
+  const std::vector<Chain> chains = run.ExtractChains();
+  const std::vector<std::vector<V3>> curves = run.FitCurves(chains);
+  this->UpdateProgress(0.9);
+
+  // Curves out, junctions shared: an end within a hundredth of a spacing of an earlier end is it.
+  std::vector<std::pair<V3, vtkIdType>> endPoints;
+  auto endPoint = [&](const V3& x) {
+    for (const auto& e : endPoints)
+    {
+      if ((e.first - x).norm() <= 0.01 * s)
+      {
+        return e.second;
+      }
+    }
+    const vtkIdType id = linePoints->InsertNextPoint(x.data());
+    endPoints.emplace_back(x, id);
+    return id;
+  };
+  std::vector<V3> samples;
+  std::vector<int> sampleCurve;
+  std::vector<V3> tangentValues;
+  for (size_t c = 0; c < curves.size(); ++c)
+  {
+    const std::vector<V3>& x = curves[c];
+    const bool closed = chains[c].Closed;
+    std::vector<vtkIdType> ids;
+    for (size_t k = 0; k < x.size(); ++k)
+    {
+      if (closed && k + 1 == x.size())
+      {
+        ids.push_back(ids.front());
+      }
+      else if (k == 0 || k + 1 == x.size())
+      {
+        ids.push_back(endPoint(x[k]));
+      }
+      else
+      {
+        ids.push_back(linePoints->InsertNextPoint(x[k].data()));
+      }
+      samples.push_back(V3(linePoints->GetPoint(ids.back())));
+      sampleCurve.push_back(static_cast<int>(c));
+    }
+    for (size_t k = 0; k < x.size(); ++k)
+    {
+      const V3 t = x[std::min(k + 1, x.size() - 1)] - x[k > 0 ? k - 1 : 0];
+      if (static_cast<vtkIdType>(tangentValues.size()) <= ids[k])
+      {
+        tangentValues.resize(ids[k] + 1, V3::Zero());
+      }
+      if (tangentValues[ids[k]].squaredNorm() == 0.0 && t.norm() > 0.0)
+      {
+        tangentValues[ids[k]] = t.normalized();
+      }
+    }
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    double length = 0.0;
+    for (size_t k = 1; k < x.size(); ++k)
+    {
+      length += (x[k] - x[k - 1]).norm();
+    }
+    cellIds->InsertNextValue(static_cast<int>(c));
+    cellLengths->InsertNextValue(length);
+    this->TotalLength += length;
+  }
+  tangents->SetNumberOfTuples(linePoints->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < linePoints->GetNumberOfPoints(); ++i)
+  {
+    const V3 t = i < static_cast<vtkIdType>(tangentValues.size()) ? tangentValues[i] : V3::Zero();
+    tangents->SetTuple3(i, t[0], t[1], t[2]);
+  }
+  this->NumberOfCurves = static_cast<vtkIdType>(curves.size());
+
+  // CurveId of the feature points; each curve's type and angle from its points.
+  PointSearch sampleSearch;
+  sampleSearch.Build(samples);
+  vtkDataArray* types = input->GetPointData()->GetArray("FeatureType");
+  vtkDataArray* angles = input->GetPointData()->GetArray("CreaseAngle");
+  std::vector<std::array<int, 5>> typeCounts(curves.size(), { 0, 0, 0, 0, 0 });
+  std::vector<double> angleSum(curves.size(), 0.0);
+  std::vector<int> angleCount(curves.size(), 0);
+  for (size_t r = 0; r < run.Points.size(); ++r)
+  {
+    if (!run.Feature[r] || samples.empty())
+    {
+      continue;
+    }
+    const vtkIdType nearest = sampleSearch.Nearest(run.Points[r]);
+    if (nearest < 0 || (samples[nearest] - run.Points[r]).norm() > AssignRadius * s)
+    {
+      continue;
+    }
+    const int c = sampleCurve[nearest];
+    const vtkIdType i = run.PointIds[r];
+    curveIds->SetValue(i, c);
+    const int type = types ? static_cast<int>(types->GetTuple1(i)) : CONVEX;
+    if (type >= 0 && type < 5)
+    {
+      ++typeCounts[c][type];
+    }
+    const double angle = angles ? angles->GetTuple1(i) : 0.0;
+    if (std::isfinite(angle) && angle > 0.0)
+    {
+      angleSum[c] += angle;
+      ++angleCount[c];
+    }
+  }
+  for (size_t c = 0; c < curves.size(); ++c)
+  {
+    const auto& k = typeCounts[c];
+    unsigned char type = CONVEX;
+    if (k[CONCAVE] > k[CONVEX] && k[CONCAVE] >= k[BORDER])
+    {
+      type = CONCAVE;
+    }
+    else if (k[BORDER] > k[CONVEX] && k[BORDER] > k[CONCAVE])
+    {
+      type = BORDER;
+    }
+    cellTypes->InsertNextValue(type);
+    cellAngles->InsertNextValue(
+      angleCount[c] ? static_cast<float>(angleSum[c] / angleCount[c]) : 0.0f);
+  }
+  return 1;
+}
+
+void vtkFeatureCurveExtraction::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FitRadius: " << this->FitRadius << "\n";
+  os << indent << "StepLength: " << this->StepLength << "\n";
+  os << indent << "JoinDistance: " << this->JoinDistance << "\n";
+  os << indent << "MinimumLength: " << this->MinimumLength << "\n";
+  os << indent << "MeanSpacing: " << this->MeanSpacing << "\n";
+  os << indent << "NumberOfCurves: " << this->NumberOfCurves << "\n";
+  os << indent << "TotalLength: " << this->TotalLength << "\n";
+}

@@ -1,0 +1,120 @@
+/**
+ * @class   vtkFeatureCurveExtraction
+ * @brief   Feature curves: polylines through the feature points found by a detector, one per
+ *          curve between two ends or junctions.
+ *
+ * Input: the full output of a feature point detector (vtkCreaseVotingFeatures by default): a point
+ * set with the point arrays `FeatureMask` (required, nonzero for a feature point) and, when
+ * present, `FeatureType` (vtkCreaseVotingFeatures::FeatureTypes), `CreaseAngle` and `Normals`;
+ * the field array `MeanSpacing` gives the mean spacing s (computed from the points when absent).
+ * Every length below is in units of s, so the result does not depend on the cloud's units.
+ *
+ * The curves are built in stages:
+ * 1. Tracing. The feature points are the trace points. From the most line-like of them not yet
+ *    covered, corners (FeatureType 3) aside, a trace steps StepLength s at a time along the
+ *    line fitted (PCA) to the trace points within FitRadius s (1.5 FitRadius where that fit
+ *    fails), each new vertex projected across
+ *    onto that line: the vertices follow the middle of the band of feature points, not the noisy
+ *    points themselves. A trace stops where no trace point lies ahead (an end), where the fit turns
+ *    by more than 35 degrees in a step or stops being line-like (a corner, a junction), or where it
+ *    comes within 1.5 s of a vertex of another trace (it joins it there: a junction, or the
+ *    continuation of the same curve).
+ * 2. Joining. Ends within JoinDistance s of each other meet at the point nearest to the lines they
+ *    point along (a corner, where three or more curves meet, or two borders at an angle); two ends
+ *    that point at each other are bridged (from up to twice that distance when they face each
+ *    other within 15 degrees); an end pointing at another curve within JoinDistance joins it.
+ *    Curves shorter than JoinDistance between two junctions (a corner traced round as well as
+ *    along its edges) collapse into one corner.
+ * 3. Cleaning. Branches shorter than MinimumLength s that end freely (spurs), and pieces shorter
+ *    than that, are removed; curves are split where they turn by more than 45 degrees within
+ *    about 3 s (a corner that a trace went round).
+ * 4. Fitting. Each vertex is moved onto the feature as the cloud around it defines it: across a
+ *    crease, to the intersection of the two faces' lines fitted to the cross-section of all points
+ *    within 1.5 FitRadius s (and 0.75 FitRadius s along the curve), the faces told apart by their
+ *    normals, then as k-means with lines; on a border, to the edge of the one face (the points' distribution across
+ *    the edge tells where it lies). Then the vertices are smoothed along the curve (ends fixed) and
+ *    resampled StepLength s apart.
+ *
+ * Output port 0: the input points (a vtkPolyData with vertex cells) with all point arrays and
+ * `CurveId` (int): the curve of each feature point within 3 s of one (the nearest), -1 elsewhere.
+ * Output port 1: the curves, one polyline cell each (a closed curve repeats its first point);
+ * junctions are points shared by the curves that meet there. Cell arrays `CurveId` (0, 1, ...),
+ * `FeatureType` (uint8, the majority type of its feature points among convex 1, concave 2 and
+ * border 4), `CreaseAngle` (float, degrees, mean over its feature points) and `Length` (double);
+ * point array `Tangent` (float, unit, along the curve's order).
+ *
+ * Errors: an input without `FeatureMask` is refused with one error line; points with a NaN or
+ * infinite coordinate are ignored. The result depends on the points only, not on their order
+ * (apart from exact ties) or the number of threads.
+ *
+ * @sa vtkCreaseVotingFeatures vtkFeatureModelSource
+ */
+#ifndef vtkFeatureCurveExtraction_h
+#define vtkFeatureCurveExtraction_h
+
+#include "FeaturePointsFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class FEATUREPOINTSFILTERS_EXPORT vtkFeatureCurveExtraction : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkFeatureCurveExtraction* New();
+  vtkTypeMacro(vtkFeatureCurveExtraction, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Radius of the local line fits and cross-sections, in mean spacings. Default 4. */
+  vtkSetClampMacro(FitRadius, double, 1.0, 100.0);
+  vtkGetMacro(FitRadius, double);
+  ///@}
+
+  ///@{
+  /** Distance between consecutive vertices, in mean spacings. Default 1. */
+  vtkSetClampMacro(StepLength, double, 0.25, 10.0);
+  vtkGetMacro(StepLength, double);
+  ///@}
+
+  ///@{
+  /** How far apart ends are joined or bridged, in mean spacings. Default 8. */
+  vtkSetClampMacro(JoinDistance, double, 0.0, 1000.0);
+  vtkGetMacro(JoinDistance, double);
+  ///@}
+
+  ///@{
+  /** Spurs and pieces shorter than this, in mean spacings, are removed. Default 3. */
+  vtkSetClampMacro(MinimumLength, double, 0.0, 1e6);
+  vtkGetMacro(MinimumLength, double);
+  ///@}
+
+  ///@{
+  /** Figures of the last run: the mean spacing used, the number of curves and their length. */
+  vtkGetMacro(MeanSpacing, double);
+  vtkGetMacro(NumberOfCurves, vtkIdType);
+  vtkGetMacro(TotalLength, double);
+  ///@}
+
+  /** The curves (output port 1). */
+  vtkPolyData* GetCurves();
+
+protected:
+  vtkFeatureCurveExtraction();
+  ~vtkFeatureCurveExtraction() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double FitRadius = 4.0;
+  double StepLength = 1.0;
+  double JoinDistance = 8.0;
+  double MinimumLength = 3.0;
+
+  double MeanSpacing = 0.0;
+  vtkIdType NumberOfCurves = 0;
+  double TotalLength = 0.0;
+
+private:
+  vtkFeatureCurveExtraction(const vtkFeatureCurveExtraction&) = delete;
+  void operator=(const vtkFeatureCurveExtraction&) = delete;
+};
+
+#endif
