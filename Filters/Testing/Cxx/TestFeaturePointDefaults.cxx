@@ -9,6 +9,7 @@
 // so that a new one is added here with its getter.
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
+#include "vtkFeatureCurveExtraction.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkSmartPointer.h"
@@ -117,6 +118,10 @@ const std::vector<Property>& Properties()
     FP_CLAMPED(vtkFeatureModelSource, ValleySlope),
     FP_CLAMPED(vtkFeatureModelSource, FeatureSeparation),
     FP_CLAMPED(vtkFeatureModelSource, OutputPointsPrecision),
+    FP_CLAMPED(vtkFeatureCurveExtraction, FitRadius),
+    FP_CLAMPED(vtkFeatureCurveExtraction, StepLength),
+    FP_CLAMPED(vtkFeatureCurveExtraction, JoinDistance),
+    FP_CLAMPED(vtkFeatureCurveExtraction, MinimumLength),
     Property{ "vtkFeatureModelSource", "SetCenter",
       [](vtkObject* o) {
         const double* c = vtkFeatureModelSource::SafeDownCast(o)->GetCenter();
@@ -163,6 +168,10 @@ vtkSmartPointer<vtkObject> MakeObject(const std::string& className)
   if (className == "vtkFeatureModelSource")
   {
     return vtkSmartPointer<vtkFeatureModelSource>::New();
+  }
+  if (className == "vtkFeatureCurveExtraction")
+  {
+    return vtkSmartPointer<vtkFeatureCurveExtraction>::New();
   }
   return nullptr;
 }
