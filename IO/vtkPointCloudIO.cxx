@@ -7,6 +7,7 @@
 #include "vtkExecutive.h"
 #include "vtkIdTypeArray.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointCloudPLYReader.h"
 #include "vtkPointCloudPLYWriter.h"
 #include "vtkPointCloudTextReader.h"
@@ -26,7 +27,9 @@
 #include <cstring>
 #include <fcntl.h>
 #include <functional>
+#include <new>
 #include <numeric>
+#include <stdexcept>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -40,19 +43,116 @@ const char* const WritableExtensions[] = { "vtp", "vtk", "ply", "csv" };
 
 // Keeps the first error an algorithm reports (the observer also keeps it off the console: the
 // caller reports it, once, as one line).
+// `First`, when set, receives the message instead (shared with a CapturingOutputWindow, so that
+// it holds whichever came first).
+// Keeps the first message in `first`, except an executive's report that an algorithm failed (a
+// dump of the pipeline request, which says nothing of the cause): that one only when nothing else
+// comes, shortened to its first sentence.
+void KeepFirst(std::string& first, std::string& pipeline, const char* vtkMessage)
+{
+  std::string text = vtkPointCloudIO::MessageText(vtkMessage);
+  const size_t dump = text.find(" returned failure for request");
+  const size_t noOutput = text.find(" did not create output for port");
+  if (dump != std::string::npos || noOutput != std::string::npos)
+  {
+    if (pipeline.empty())
+    {
+      pipeline = text.substr(0, std::min(dump, noOutput)) + " failed";
+    }
+    return;
+  }
+  if (first.empty())
+  {
+    first = text;
+  }
+}
+
 class ErrorCatcher : public vtkCommand
 {
 public:
   static ErrorCatcher* New() { return new ErrorCatcher; }
   void Execute(vtkObject*, unsigned long, void* callData) override
   {
-    if (this->Message.empty())
+    KeepFirst(this->First ? *this->First : this->Message,
+      this->Pipeline ? *this->Pipeline : this->PipelineMessage,
+      static_cast<const char*>(callData));
+  }
+  std::string Message, PipelineMessage;
+  std::string* First = nullptr;
+  std::string* Pipeline = nullptr;
+};
+
+// While alive, the VTK messages that reach the output window (those of objects without an error
+// observer: a reader's internal parser, array or executive) are kept rather than printed: the
+// first error, and the first warning when warnings count as failures (the legacy reader reports a
+// short or malformed body only as a warning); other warnings go on to the previous window.
+class CapturingOutputWindow : public vtkOutputWindow
+{
+public:
+  static CapturingOutputWindow* New();
+  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
+  void Install(bool warningsFail)
+  {
+    this->WarningsFail = warningsFail;
+    this->Previous = vtkOutputWindow::GetInstance();
+    vtkOutputWindow::SetInstance(this);
+  }
+  void Uninstall()
+  {
+    if (vtkOutputWindow::GetInstance() == this)
     {
-      this->Message = vtkPointCloudIO::MessageText(static_cast<const char*>(callData));
+      vtkOutputWindow::SetInstance(this->Previous);
+    }
+    this->Previous = nullptr;
+  }
+  void DisplayText(const char* text) override { this->Keep(text); }
+  void DisplayErrorText(const char* text) override { this->Keep(text); }
+  void DisplayWarningText(const char* text) override
+  {
+    if (this->WarningsFail)
+    {
+      this->Keep(text);
+    }
+    else if (this->Previous)
+    {
+      this->Previous->DisplayWarningText(text);
     }
   }
-  std::string Message;
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  void DisplayDebugText(const char*) override {}
+  std::string Message, PipelineMessage;
+  // The message to report: the first, else the executive's.
+  const std::string& Text() const
+  {
+    return this->Message.empty() ? this->PipelineMessage : this->Message;
+  }
+
+private:
+  void Keep(const char* text) { KeepFirst(this->Message, this->PipelineMessage, text); }
+
+public:
+  vtkSmartPointer<vtkOutputWindow> Previous;
+  bool WarningsFail = false;
 };
+vtkStandardNewMacro(CapturingOutputWindow);
+
+// Installs a CapturingOutputWindow for the lifetime of the scope, whatever way it is left.
+struct ScopedCapture
+{
+  explicit ScopedCapture(bool warningsFail) { this->Window->Install(warningsFail); }
+  ~ScopedCapture() { this->Window->Uninstall(); }
+  vtkNew<CapturingOutputWindow> Window;
+};
+
+// What an exception thrown out of a reader or writer says, as one line.
+std::string ExceptionText(const std::exception& e)
+{
+  if (dynamic_cast<const std::bad_alloc*>(&e) || dynamic_cast<const std::length_error*>(&e))
+  {
+    return "not enough memory";
+  }
+  return std::string("unexpected failure (") + e.what() + ")";
+}
 
 std::string WithFile(const std::string& fileName, const std::string& message)
 {
@@ -152,6 +252,7 @@ std::string vtkPointCloudIO::MessageText(const char* vtkMessage)
 {
   std::string text = vtkMessage ? vtkMessage : "";
   // vtkErrorMacro's text: "ERROR: In FILE, line N\nCLASS (ADDRESS): MESSAGE\n\n".
+  // vtkGenericWarningMacro's: "Generic Warning: In FILE, line N\nMESSAGE\n\n".
   const size_t newline = text.find('\n');
   if (text.compare(0, 3, "ERR") == 0 || text.compare(0, 4, "Warn") == 0)
   {
@@ -160,6 +261,10 @@ std::string vtkPointCloudIO::MessageText(const char* vtkMessage)
     {
       text.erase(0, start + 3);
     }
+  }
+  else if (text.compare(0, 19, "Generic Warning: In") == 0 && newline != std::string::npos)
+  {
+    text.erase(0, newline + 1);
   }
   for (char& c : text)
   {
@@ -186,6 +291,18 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   if (S_ISDIR(info.st_mode))
   {
     error = fileName + ": is a folder, not a file";
+    return nullptr;
+  }
+  if (!S_ISREG(info.st_mode))
+  {
+    // Opening a FIFO without a writer would block, and a device never ends.
+    error = fileName + ": is " +
+      (S_ISFIFO(info.st_mode)       ? "a FIFO (named pipe)"
+          : S_ISCHR(info.st_mode)   ? "a character device"
+          : S_ISBLK(info.st_mode)   ? "a block device"
+          : S_ISSOCK(info.st_mode)  ? "a socket"
+                                    : "not a plain file") +
+      ", not a regular file: point clouds are read from regular files";
     return nullptr;
   }
   if (!CanRead(extension))
@@ -233,6 +350,12 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   {
     auto r = vtkSmartPointer<vtkDataSetReader>::New();
     r->SetFileName(fileName.c_str());
+    ScopedCapture capture(true);
+    if (r->ReadOutputType() < 0)
+    {
+      error = fileName + ": not a legacy VTK data set file (no header and DATASET line it can read)";
+      return nullptr;
+    }
     reader = r;
   }
   else
@@ -241,18 +364,40 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
     r->SetFileName(fileName.c_str());
     reader = r;
   }
+  // Every message of the read, the reader's own or its parts', ends as the one line of `error`;
+  // for the legacy reader a warning is a failure too (a short body is only a warning there).
+  ScopedCapture capture(extension == "vtk");
   vtkNew<ErrorCatcher> catcher;
+  catcher->First = &capture.Window->Message;
+  catcher->Pipeline = &capture.Window->PipelineMessage;
   reader->AddObserver(vtkCommand::ErrorEvent, catcher);
   if (observer)
   {
     reader->AddObserver(vtkCommand::ProgressEvent, observer);
   }
-  const int updated = reader->GetExecutive()->Update();
-  if (!updated || !catcher->Message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
+  int updated = 0;
+  try
+  {
+    updated = reader->GetExecutive()->Update();
+  }
+  catch (const std::exception& e)
+  {
+    const std::string& first = capture.Window->Text();
+    error = WithFile(fileName,
+      "cannot read: " + ExceptionText(e) + (first.empty() ? std::string() : " (" + first + ")"));
+    return nullptr;
+  }
+  const std::string& message = capture.Window->Message.empty() &&
+      reader->GetErrorCode() != vtkErrorCode::NoError
+    ? capture.Window->Message
+    : capture.Window->Text();
+  if (!updated || !message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const unsigned long code = reader->GetErrorCode();
+    const bool ours = extension == "ply" || extension == "pts" || extension == "xyz" ||
+      extension == "txt" || extension == "csv";
     error = WithFile(fileName,
-      !catcher->Message.empty() ? catcher->Message
+      !message.empty() ? (ours ? message : "cannot read: " + message)
         : code != vtkErrorCode::NoError
         ? std::string("cannot read: ") + vtkErrorCode::GetStringFromErrorCode(code)
         : std::string("cannot read: not a valid ." + extension + " file"));
@@ -374,18 +519,39 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
     writer = w;
     write = [w]() { return w->Write(); };
   }
+  ScopedCapture capture(false);
   vtkNew<ErrorCatcher> catcher;
+  catcher->First = &capture.Window->Message;
+  catcher->Pipeline = &capture.Window->PipelineMessage;
   writer->AddObserver(vtkCommand::ErrorEvent, catcher);
   if (observer)
   {
     writer->AddObserver(vtkCommand::ProgressEvent, observer);
   }
-  const int written = write();
-  bool ok = written == 1 && catcher->Message.empty() &&
-    writer->GetErrorCode() == vtkErrorCode::NoError;
+  int written = 0;
+  std::string thrown;
+  try
+  {
+    written = write();
+  }
+  catch (const std::exception& e)
+  {
+    thrown = "cannot write: " + ExceptionText(e);
+  }
+  const unsigned long code = writer->GetErrorCode();
+  bool ok = written == 1 && capture.Window->Text().empty() && thrown.empty() &&
+    code == vtkErrorCode::NoError;
   if (!ok)
   {
-    std::string message = catcher->Message;
+    // The cause, else the error code (the writers' own words for a full disk), else the
+    // executive's report.
+    std::string message = !thrown.empty() ? thrown
+      : !capture.Window->Message.empty() ? capture.Window->Message
+      : code == vtkErrorCode::OutOfDiskSpaceError
+      ? std::string("cannot write: out of disk space (or past the file size limit)")
+      : code != vtkErrorCode::NoError
+      ? std::string("cannot write: ") + vtkErrorCode::GetStringFromErrorCode(code)
+      : capture.Window->PipelineMessage;
     // The writers name the temporary file; the user knows the target.
     const size_t at = message.find(temporary);
     if (at != std::string::npos)

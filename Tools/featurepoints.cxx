@@ -12,6 +12,7 @@
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkFeaturePointExtraction.h"
+#include "vtkLogger.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -49,6 +50,7 @@
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -773,6 +775,9 @@ bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
 // ---------------------------------------------------------------------------------------------
 // Command line
 
+// The largest picture --size accepts, in pixels.
+constexpr long long MaxPicturePixels = 4096LL * 4096LL;
+
 struct Settings
 {
   std::string Input, Output, Screenshot;
@@ -901,6 +906,15 @@ Settings ParseArguments(int argc, char* argv[])
       {
         Fail(ExitUsage, "--size takes WIDTHxHEIGHT in pixels, each from 16 to 8192; got '" + v + "'");
       }
+      // An offscreen picture takes about 64 bytes per pixel in all (colour, depth and copies):
+      // 8192x8192 would take over 4 GB and most of a minute.
+      if (static_cast<long long>(w) * h > MaxPicturePixels)
+      {
+        Fail(ExitUsage, "--size " + v + " is " + FormatNumber(std::round(w * (h / 1e5)) / 10) +
+            " megapixels, about " + FormatNumber(std::ceil(64.0 * w * h / 1e8) / 10) +
+            " GB to render: at most " + FormatNumber(MaxPicturePixels / 1e6) +
+            " megapixels (e.g. 4096x4096)");
+      }
       s.Width = w;
       s.Height = h;
     }
@@ -988,11 +1002,34 @@ bool SameFile(const std::string& a, const std::string& b)
 }
 } // namespace
 
+int Run(const Settings& s);
+
 int main(int argc, char* argv[])
 {
+  // VTK's messages come through the output window, as one line each, and never through VTK's
+  // logger (which prints them again, with a time stamp, on stderr).
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   vtkNew<OneLineOutputWindow> messages;
   vtkOutputWindow::SetInstance(messages);
   const Settings s = ParseArguments(argc, argv);
+  try
+  {
+    return Run(s);
+  }
+  catch (const std::bad_alloc&)
+  {
+    RemoveTemporaries(0);
+    Fail(ExitFailure, s.Input + ": not enough memory to process this cloud");
+  }
+  catch (const std::exception& e)
+  {
+    RemoveTemporaries(0);
+    Fail(ExitFailure, s.Input + ": unexpected failure (" + e.what() + ")");
+  }
+}
+
+int Run(const Settings& s)
+{
 
   // What the command line alone decides: formats, and files that must not be overwritten.
   const std::string inExt = vtkPointCloudIO::GetExtension(s.Input);
@@ -1031,11 +1068,26 @@ int main(int argc, char* argv[])
     Fail(ExitFailure, s.Screenshot + ": cannot render: this VTK renders through X and no "
                                      "display is set (run under xvfb-run -a)");
   }
-  std::signal(SIGINT, RemoveTemporaries);
-  std::signal(SIGTERM, RemoveTemporaries);
+  // Any signal that ends the program removes the temporary files first (SIGPIPE: a closed
+  // terminal or pipe on stderr; SIGXCPU: the shell's CPU time limit). Past the shell's file size
+  // limit a write fails (rather than a signal ending the program), and the writer says so.
+  for (int signal : { SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGXCPU, SIGALRM, SIGUSR1,
+         SIGUSR2 })
+  {
+    std::signal(signal, RemoveTemporaries);
+  }
+  std::signal(SIGXFSZ, SIG_IGN);
   if (s.Threads > 0)
   {
-    vtkSMPTools::Initialize(s.Threads);
+    // More threads than cores only slows the run down (and TBB says so on the console).
+    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    if (s.Threads > cores && !Quiet)
+    {
+      std::fprintf(stderr, "featurepoints: warning: --threads %d: this machine has %d core(s); "
+                           "using %d\n",
+        s.Threads, cores, cores);
+    }
+    vtkSMPTools::Initialize(std::min(s.Threads, cores));
   }
 
   vtkNew<Progress> progress;
