@@ -459,7 +459,7 @@ void PrintHelp()
     "                        (array vtkOriginalPointIds)\n"
     "  --screenshot FILE.png render the result offscreen: points coloured by the score, feature\n"
     "                        points in red (Debian's VTK needs an X display: use xvfb-run -a)\n"
-    "  --size WxH            picture size (default 1200x900)\n"
+    "  --size WxH            picture size (default 1200x900; at most 4096x4096 pixels)\n"
     "  --threads N           number of threads (default: all cores)\n"
     "  --quiet               print nothing but errors\n"
     "  --help                this text\n"
@@ -912,7 +912,7 @@ Settings ParseArguments(int argc, char* argv[])
       {
         Fail(ExitUsage, "--size " + v + " is " + FormatNumber(std::round(w * (h / 1e5)) / 10) +
             " megapixels, about " + FormatNumber(std::ceil(64.0 * w * h / 1e8) / 10) +
-            " GB to render: at most " + FormatNumber(MaxPicturePixels / 1e6) +
+            " GB to render: at most " + FormatNumber(std::round(MaxPicturePixels / 1e5) / 10) +
             " megapixels (e.g. 4096x4096)");
       }
       s.Width = w;
@@ -951,7 +951,8 @@ Settings ParseArguments(int argc, char* argv[])
       {
         Fail(ExitUsage, "--" + name + " takes a number; got '" + v + "'");
       }
-      else if (number < o->Min || number > o->Max || (o->Integer && number != std::floor(number)))
+      else if ((number < o->Min && o->Min > -1e299) || (number > o->Max && o->Max < 1e299) ||
+        (o->Integer && number != std::floor(number)))
       {
         Fail(ExitUsage, "--" + name + " " + v + " is out of range: " +
             (o->Integer ? "a whole number" : "a number") + " from " + FormatNumber(o->Min) +
@@ -992,6 +993,25 @@ Settings ParseArguments(int argc, char* argv[])
     }
   }
   return s;
+}
+
+// The input's point arrays that the method's own arrays of the same name replace in the output
+// (the input's Normals, for instance): one line each, so that no column is lost without a word.
+void WarnReplacedArrays(vtkPointSet* input, vtkPolyData* result)
+{
+  vtkPointData* in = input->GetPointData();
+  vtkPointData* out = result->GetPointData();
+  for (int a = 0; a < in->GetNumberOfArrays() && !Quiet; ++a)
+  {
+    vtkAbstractArray* array = in->GetAbstractArray(a);
+    const char* name = array ? array->GetName() : nullptr;
+    vtkAbstractArray* written = name ? out->GetAbstractArray(name) : nullptr;
+    if (written && written != array)
+    {
+      std::fprintf(stderr,
+        "featurepoints: note: the input's point array '%s' is replaced by the method's own\n", name);
+    }
+  }
 }
 
 bool SameFile(const std::string& a, const std::string& b)
@@ -1156,6 +1176,7 @@ int Run(const Settings& s)
     Fail(ExitFailure, s.Input + ": " + filterError->Message);
   }
   vtkPolyData* result = filter->GetOutput();
+  WarnReplacedArrays(cloud, result);
   const double grown = method->GrowThreshold ? method->GrowThreshold(filter) : std::nan("");
 
   // Picture (into a temporary file: renamed only once the output is written too).
