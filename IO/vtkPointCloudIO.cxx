@@ -3,6 +3,7 @@
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkDataSetReader.h"
+#include "vtkDataSetWriter.h"
 #include "vtkErrorCode.h"
 #include "vtkExecutive.h"
 #include "vtkIdTypeArray.h"
@@ -30,9 +31,23 @@
 #include <new>
 #include <numeric>
 #include <stdexcept>
+#include <csignal>
+#include <sstream>
+#include <sys/mman.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
+
+// An address sanitizer reserves terabytes of address space: no address space limit under it.
+#if defined(__SANITIZE_ADDRESS__)
+#define FEATUREPOINTS_IO_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FEATUREPOINTS_IO_SANITIZED 1
+#endif
+#endif
 
 vtkStandardNewMacro(vtkPointCloudIO);
 
@@ -327,6 +342,14 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
     return nullptr;
   }
 
+  const bool vtkFormat = extension == "vtp" || extension == "vtu" || extension == "vtk";
+  return vtkFormat ? ReadIsolated(fileName, extension, static_cast<double>(info.st_size), error, observer)
+                   : ReadWithReader(fileName, extension, error, observer);
+}
+
+vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& fileName,
+  const std::string& extension, std::string& error, vtkCommand* observer)
+{
   vtkSmartPointer<vtkAlgorithm> reader;
   if (extension == "ply")
   {
@@ -411,9 +434,208 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
       ", not a point set";
     return nullptr;
   }
+  // A malformed legacy file can leave arrays shorter than the points.
+  vtkPointData* pd = points->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = pd->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() != points->GetNumberOfPoints())
+    {
+      error = fileName + ": cannot read: point array '" +
+        (array->GetName() ? MessageText(array->GetName()) : std::string("(no name)")) + "' has " +
+        std::to_string(array->GetNumberOfTuples()) + " values for " +
+        std::to_string(points->GetNumberOfPoints()) + " points";
+      return nullptr;
+    }
+  }
   vtkSmartPointer<vtkPointSet> result;
   result.TakeReference(points->NewInstance());
   result->ShallowCopy(points);
+  return result;
+}
+
+namespace
+{
+double ReaderTimeLimitSeconds = 0.0;
+
+// Writes all of `text` to `fd`.
+void WriteAll(int fd, const std::string& text)
+{
+  for (size_t done = 0; done < text.size();)
+  {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n <= 0 && errno != EINTR)
+    {
+      return;
+    }
+    done += n > 0 ? static_cast<size_t>(n) : 0;
+  }
+}
+} // namespace
+
+void vtkPointCloudIO::SetReaderTimeLimit(double seconds)
+{
+  ReaderTimeLimitSeconds = seconds > 0.0 ? seconds : 0.0;
+}
+
+double vtkPointCloudIO::GetReaderTimeLimit()
+{
+  return ReaderTimeLimitSeconds;
+}
+
+vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fileName,
+  const std::string& extension, double fileSize, std::string& error, vtkCommand* observer)
+{
+  // VTK's readers crash or loop on some malformed files (a cut or corrupt legacy body, a huge
+  // NumberOfComponents, a bad compressed block): they run in a child process under a time and a
+  // memory limit, which hands the cloud back as a legacy binary VTK file in an anonymous memory
+  // file (its own output, which the legacy reader reads safely), or its one-line error.
+  const int memory = ::memfd_create("featurepoints-read", MFD_CLOEXEC);
+  if (memory < 0)
+  {
+    return ReadWithReader(fileName, extension, error, observer);
+  }
+  const double limit =
+    ReaderTimeLimitSeconds > 0.0 ? ReaderTimeLimitSeconds : 60.0 + fileSize / 4e6;
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0)
+  {
+    ::close(memory);
+    return ReadWithReader(fileName, extension, error, observer);
+  }
+  if (pid == 0)
+  {
+    std::signal(SIGALRM, SIG_DFL);
+    const rlimit core = { 0, 0 };
+    ::setrlimit(RLIMIT_CORE, &core);
+#ifndef FEATUREPOINTS_IO_SANITIZED
+    // No more address space than the machine has memory: a huge declared count fails at once.
+    const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+    if (pages > 0 && pageSize > 0)
+    {
+      const rlim_t bytes = static_cast<rlim_t>(pages) * static_cast<rlim_t>(pageSize);
+      const rlimit space = { bytes, bytes };
+      ::setrlimit(RLIMIT_AS, &space);
+    }
+#endif
+    ::alarm(static_cast<unsigned>(std::min(limit, 1e6)));
+    std::string childError;
+    vtkSmartPointer<vtkPointSet> cloud;
+    try
+    {
+      cloud = ReadWithReader(fileName, extension, childError, observer);
+    }
+    catch (const std::exception& e)
+    {
+      childError = WithFile(fileName, "cannot read: " + ExceptionText(e));
+    }
+    if (!cloud)
+    {
+      WriteAll(memory, childError);
+      ::_exit(3);
+    }
+    vtkNew<vtkDataSetWriter> writer;
+    writer->SetInputData(cloud);
+    writer->SetFileTypeToBinary();
+    const std::string path = "/proc/self/fd/" + std::to_string(memory);
+    writer->SetFileName(path.c_str());
+    ScopedCapture capture(false);
+    try
+    {
+      if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError)
+      {
+        WriteAll(memory, fileName + ": cannot read: not enough memory to hand the cloud over");
+        ::_exit(3);
+      }
+    }
+    catch (const std::exception& e)
+    {
+      ::ftruncate(memory, 0);
+      ::lseek(memory, 0, SEEK_SET);
+      WriteAll(memory, WithFile(fileName, "cannot read: " + ExceptionText(e)));
+      ::_exit(3);
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+  {
+  }
+  auto readText = [memory]() {
+    std::string text;
+    char buffer[4096];
+    ::lseek(memory, 0, SEEK_SET);
+    for (ssize_t n; (n = ::read(memory, buffer, sizeof(buffer))) > 0 && text.size() < 65536;)
+    {
+      text.append(buffer, static_cast<size_t>(n));
+    }
+    return text;
+  };
+  vtkSmartPointer<vtkPointSet> result;
+  if (WIFSIGNALED(status))
+  {
+    const int signal = WTERMSIG(status);
+    std::ostringstream m;
+    if (signal == SIGALRM || signal == SIGXCPU)
+    {
+      m << fileName << ": cannot read: VTK's reader did not finish within " << limit
+        << " s: the file is malformed (or larger than it looks)";
+    }
+    else
+    {
+      m << fileName << ": cannot read: VTK's reader failed on the file (" << strsignal(signal)
+        << "): the file is malformed";
+    }
+    error = m.str();
+  }
+  else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  {
+    error = readText();
+    if (error.empty())
+    {
+      error = fileName + ": cannot read: VTK's reader failed on the file";
+    }
+  }
+  else
+  {
+    vtkNew<vtkDataSetReader> reader;
+    const std::string path = "/proc/self/fd/" + std::to_string(memory);
+    reader->SetFileName(path.c_str());
+    reader->ReadAllScalarsOn();
+    reader->ReadAllVectorsOn();
+    reader->ReadAllNormalsOn();
+    reader->ReadAllTensorsOn();
+    reader->ReadAllColorScalarsOn();
+    reader->ReadAllTCoordsOn();
+    reader->ReadAllFieldsOn();
+    ScopedCapture capture(false);
+    try
+    {
+      reader->Update();
+      result = vtkPointSet::SafeDownCast(reader->GetOutput());
+    }
+    catch (const std::exception& e)
+    {
+      result = nullptr;
+      capture.Window->Message = ExceptionText(e);
+    }
+    if (!result || !capture.Window->Text().empty())
+    {
+      error = fileName + ": cannot read: " +
+        (capture.Window->Text().empty() ? std::string("the reader's output was lost")
+                                        : capture.Window->Text());
+      result = nullptr;
+    }
+    else
+    {
+      vtkSmartPointer<vtkPointSet> copy;
+      copy.TakeReference(result->NewInstance());
+      copy->ShallowCopy(result);
+      result = copy;
+    }
+  }
+  ::close(memory);
   return result;
 }
 
