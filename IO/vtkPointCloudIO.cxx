@@ -34,6 +34,7 @@
 #include <csignal>
 #include <sstream>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -506,6 +507,7 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fi
   }
   if (pid == 0)
   {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL); // ends with its parent (killed by a signal, say)
     std::signal(SIGALRM, SIG_DFL);
     const rlimit core = { 0, 0 };
     ::setrlimit(RLIMIT_CORE, &core);
@@ -697,12 +699,20 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
       "; writable: " + GetWritableExtensions();
     return false;
   }
+  // No signal between creating the temporary file and naming it for the signal handlers.
+  sigset_t all, previous;
+  sigfillset(&all);
+  ::sigprocmask(SIG_BLOCK, &all, &previous);
   const std::string temporary = CreateTemporaryFile(fileName, error);
+  if (!temporary.empty())
+  {
+    std::snprintf(TemporaryInProgress, sizeof(TemporaryInProgress), "%s", temporary.c_str());
+  }
+  ::sigprocmask(SIG_SETMASK, &previous, nullptr);
   if (temporary.empty())
   {
     return false;
   }
-  std::snprintf(TemporaryInProgress, sizeof(TemporaryInProgress), "%s", temporary.c_str());
 
   // vtkXMLWriter is not a vtkWriter: keep the algorithm and its Write().
   vtkSmartPointer<vtkAlgorithm> writer;

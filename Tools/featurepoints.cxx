@@ -1373,12 +1373,17 @@ int Run(const Settings& s)
   {
     progress->Stage("rendering");
     start = Clock::now();
+    // No signal between creating the file and naming it for RemoveTemporaries.
+    sigset_t all, previous;
+    sigfillset(&all);
+    ::sigprocmask(SIG_BLOCK, &all, &previous);
     pictureTemporary = vtkPointCloudIO::CreateTemporaryFile(s.Screenshot, error);
+    std::snprintf(PictureTemporary, sizeof(PictureTemporary), "%s", pictureTemporary.c_str());
+    ::sigprocmask(SIG_SETMASK, &previous, nullptr);
     if (pictureTemporary.empty())
     {
       Fail(ExitFailure, error);
     }
-    std::snprintf(PictureTemporary, sizeof(PictureTemporary), "%s", pictureTemporary.c_str());
     std::ostringstream caption;
     caption << method->Name << ": " << filter->GetNumberOfFeaturePoints()
             << " feature points (red) of " << n << ", " << filter->GetScoreArrayName() << " > "

@@ -344,7 +344,7 @@ std::string Mutate(const std::string& bytes, std::mt19937& rng)
 int TestPointCloudIOFuzz(int argc, char* argv[])
 {
   const std::string folder = argc > 1 ? argv[1] : ".";
-  const int perSeed = argc > 2 ? std::atoi(argv[2]) : 200;
+  const int perSeed = argc > 2 ? std::atoi(argv[2]) : 150;
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   // VTK's readers loop on some mutations: they end in a message after this long (the files are
   // tiny; a hang is what the limit is for).
