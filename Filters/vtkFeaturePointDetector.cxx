@@ -441,6 +441,44 @@ void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned
   constexpr vtkIdType Block = 65536;
   const vtkIdType nBlocks = (n + Block - 1) / Block;
   const featurepoints::PointReader reader(points);
+  // A few far outliers (one point at 1e30 among 100,000) would make the covariance theirs: only
+  // the points in the robust box count, the central 99 % of the points on each axis widened by
+  // half its size, as in vtkPointCloudNeighborhoods' grid.
+  double lo[3], hi[3];
+  {
+    const vtkIdType stride = std::max<vtkIdType>(1, n / 100000);
+    std::vector<double> sample;
+    double x[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      sample.clear();
+      for (vtkIdType i = 0; i < n; i += stride)
+      {
+        if (valid[i])
+        {
+          reader.Get(i, x);
+          sample.push_back(x[a]);
+        }
+      }
+      lo[a] = -VTK_DOUBLE_MAX;
+      hi[a] = VTK_DOUBLE_MAX;
+      if (sample.empty())
+      {
+        continue;
+      }
+      const size_t qlo = sample.size() / 200, qhi = sample.size() - 1 - sample.size() / 200;
+      std::nth_element(sample.begin(), sample.begin() + qlo, sample.end());
+      const double rlo = sample[qlo];
+      std::nth_element(sample.begin(), sample.begin() + qhi, sample.end());
+      const double rhi = sample[qhi];
+      lo[a] = rlo - 0.5 * (rhi - rlo);
+      hi[a] = rhi + 0.5 * (rhi - rlo);
+    }
+  }
+  auto inBox = [&lo, &hi](const double x[3]) {
+    return x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1] && x[2] >= lo[2] &&
+      x[2] <= hi[2];
+  };
   auto sumOverValid = [&](auto zero, auto term) {
     std::vector<decltype(zero)> sums(nBlocks, zero);
     vtkSMPTools::For(0, nBlocks, [&](vtkIdType first, vtkIdType last) {
@@ -452,7 +490,10 @@ void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned
           if (valid[i])
           {
             reader.Get(i, x);
-            sums[blk] += term(Eigen::Vector3d(x[0], x[1], x[2]));
+            if (inBox(x))
+            {
+              sums[blk] += term(Eigen::Vector3d(x[0], x[1], x[2]));
+            }
           }
         }
       }

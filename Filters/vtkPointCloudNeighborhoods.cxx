@@ -33,6 +33,15 @@ struct vtkPointCloudNeighborhoods::SearchGrid
   std::vector<double> SortedPoints; // coordinates of each slot
   std::vector<int32_t> SlotOf;      // slot of each point, -1 for invalid points
 
+  // Coincident points (BuildSites(), only when some points coincide): the distinct positions of
+  // each cell ("sites"), each with its points, so that a query reads a stack of copies once
+  // rather than once per copy.
+  bool HasDuplicates = false;
+  std::vector<int32_t> SiteStart;   // first site of each cell, then the number of sites
+  std::vector<double> SitePoints;   // coordinates of each site
+  std::vector<int32_t> MemberStart; // first member of each site, then the number of members
+  std::vector<int32_t> Members;     // slots of the points of each site, ascending
+
   vtkIdType Index(int i, int j, int k) const
   {
     return i + this->Dims[0] * (j + static_cast<vtkIdType>(this->Dims[1]) * k);
@@ -205,6 +214,7 @@ struct GridNeighborsWorker
   int K;
   int32_t* Table;
   double* Nearest;
+  bool Distinct; // K = 1 only: the nearest point at a nonzero distance
 
   struct Candidate
   {
@@ -294,18 +304,48 @@ struct GridNeighborsWorker
   // k = 1 (the spacing and the voxel densities ask it of every point): the best candidate is kept
   // in registers rather than in a heap, the cells of the first ring are pruned with per-axis gaps
   // computed once, and the search stops at the same ring as the general one, with the same result.
+  // Distinct: the nearest point at a nonzero distance (copies of x are skipped).
+  template <bool Distinct>
   Candidate NearestOne(const double* x, int32_t id) const
   {
     const auto& g = *this->Grid;
     Candidate best{ VTK_DOUBLE_MAX, -1 };
     auto scanCell = [&](vtkIdType cell) {
+      if (g.HasDuplicates)
+      {
+        // A site's nearest candidate is its first point other than x.
+        for (int32_t site = g.SiteStart[cell]; site < g.SiteStart[cell + 1]; ++site)
+        {
+          const double* y = g.SitePoints.data() + 3 * static_cast<size_t>(site);
+          const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          if (d2 <= best.D2 && (!Distinct || d2 > 0.0))
+          {
+            int32_t m = g.MemberStart[site];
+            int32_t other = g.SortedIds[g.Members[m]];
+            if (other == id)
+            {
+              if (++m == g.MemberStart[site + 1])
+              {
+                continue;
+              }
+              other = g.SortedIds[g.Members[m]];
+            }
+            if (d2 < best.D2 || other < best.Id)
+            {
+              best = Candidate{ d2, other };
+            }
+          }
+        }
+        return;
+      }
       const int32_t last = g.CellStart[cell + 1];
       const double* y = g.SortedPoints.data() + 3 * static_cast<size_t>(g.CellStart[cell]);
       for (int32_t s = g.CellStart[cell]; s < last; ++s, y += 3)
       {
         const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
         const double d2 = dx * dx + dy * dy + dz * dz;
-        if (d2 <= best.D2)
+        if (d2 <= best.D2 && (!Distinct || d2 > 0.0))
         {
           const int32_t other = g.SortedIds[s];
           if (other != id && (d2 < best.D2 || other < best.Id))
@@ -390,8 +430,9 @@ struct GridNeighborsWorker
       {
         const int32_t slot = this->Slots[o];
         const vtkIdType r = this->Rows[o];
-        const Candidate best =
-          this->NearestOne(g.SortedPoints.data() + 3 * static_cast<size_t>(slot), g.SortedIds[slot]);
+        const double* x = g.SortedPoints.data() + 3 * static_cast<size_t>(slot);
+        const Candidate best = this->Distinct ? this->NearestOne<true>(x, g.SortedIds[slot])
+                                              : this->NearestOne<false>(x, g.SortedIds[slot]);
         this->Table[r] = best.Id;
         if (this->Nearest)
         {
@@ -439,6 +480,60 @@ struct GridNeighborsWorker
               return;
             }
             const vtkIdType cell = g.Index(i, j, k);
+            // Offers a candidate; false when it is not kept.
+            auto offer = [&](const Candidate& cand) {
+              if (!useHeap)
+              {
+                if (cand.D2 <= bound)
+                {
+                  candidates.push_back(cand);
+                  return true;
+                }
+                return false;
+              }
+              if (static_cast<int>(candidates.size()) < this->K)
+              {
+                candidates.push_back(cand);
+                std::push_heap(candidates.begin(), candidates.end());
+                return true;
+              }
+              if (cand < candidates.front())
+              {
+                std::pop_heap(candidates.begin(), candidates.end());
+                candidates.back() = cand;
+                std::push_heap(candidates.begin(), candidates.end());
+                return true;
+              }
+              return false;
+            };
+            if (g.HasDuplicates)
+            {
+              // The points of a site share their distance and come in ascending ids: at most K
+              // of them can be among the K nearest, the first K other than the query, and once
+              // one is not kept none of the next ones is.
+              for (int32_t site = g.SiteStart[cell]; site < g.SiteStart[cell + 1]; ++site)
+              {
+                const double* y = g.SitePoints.data() + 3 * static_cast<size_t>(site);
+                const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+                const double d2 = dx * dx + dy * dy + dz * dz;
+                int kept = 0;
+                for (int32_t m = g.MemberStart[site]; m < g.MemberStart[site + 1] && kept < this->K;
+                     ++m)
+                {
+                  const int32_t other = g.SortedIds[g.Members[m]];
+                  if (other == id)
+                  {
+                    continue;
+                  }
+                  if (!offer(Candidate{ d2, other }))
+                  {
+                    break;
+                  }
+                  ++kept;
+                }
+              }
+              return;
+            }
             for (int32_t s = g.CellStart[cell]; s < g.CellStart[cell + 1]; ++s)
             {
               const int32_t other = g.SortedIds[s];
@@ -448,25 +543,7 @@ struct GridNeighborsWorker
               }
               const double* y = g.SortedPoints.data() + 3 * static_cast<size_t>(s);
               const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
-              const Candidate cand{ dx * dx + dy * dy + dz * dz, other };
-              if (!useHeap)
-              {
-                if (cand.D2 <= bound)
-                {
-                  candidates.push_back(cand);
-                }
-              }
-              else if (static_cast<int>(candidates.size()) < this->K)
-              {
-                candidates.push_back(cand);
-                std::push_heap(candidates.begin(), candidates.end());
-              }
-              else if (cand < candidates.front())
-              {
-                std::pop_heap(candidates.begin(), candidates.end());
-                candidates.back() = cand;
-                std::push_heap(candidates.begin(), candidates.end());
-              }
+              offer(Candidate{ dx * dx + dy * dy + dz * dz, other });
             }
           };
           g.ForEachCellOfRing(c, ring, scan);
@@ -766,6 +843,88 @@ void vtkPointCloudNeighborhoods::BuildGrid()
       reader.Get(i, g.SortedPoints.data() + 3 * static_cast<size_t>(slot));
     }
   }
+  this->BuildSites();
+}
+
+void vtkPointCloudNeighborhoods::BuildSites()
+{
+  SearchGrid& g = *this->Grid;
+  const vtkIdType numberOfCells = static_cast<vtkIdType>(g.CellStart.size()) - 1;
+  const double* p = g.SortedPoints.data();
+  auto byPosition = [p](int32_t a, int32_t b) {
+    const double* x = p + 3 * static_cast<size_t>(a);
+    const double* y = p + 3 * static_cast<size_t>(b);
+    return x[0] != y[0] ? x[0] < y[0] : x[1] != y[1] ? x[1] < y[1] : x[2] != y[2] ? x[2] < y[2] : a < b;
+  };
+  auto same = [p](int32_t a, int32_t b) {
+    const double* x = p + 3 * static_cast<size_t>(a);
+    const double* y = p + 3 * static_cast<size_t>(b);
+    return x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
+  };
+  // Whether any cell holds two points at one position (most clouds: none, and the grid stays as
+  // it is); cells are checked in parallel, each on its own.
+  std::vector<unsigned char> cellHasCopies(numberOfCells, 0);
+  vtkSMPTools::For(0, numberOfCells, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<int32_t> slots;
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      const int32_t first = g.CellStart[cell], last = g.CellStart[cell + 1];
+      if (last - first < 2)
+      {
+        continue;
+      }
+      slots.resize(last - first);
+      std::iota(slots.begin(), slots.end(), first);
+      std::sort(slots.begin(), slots.end(), byPosition);
+      for (size_t s = 1; s < slots.size() && !cellHasCopies[cell]; ++s)
+      {
+        cellHasCopies[cell] = same(slots[s - 1], slots[s]) ? 1 : 0;
+      }
+    }
+  });
+  g.HasDuplicates = std::find(cellHasCopies.begin(), cellHasCopies.end(), 1) != cellHasCopies.end();
+  if (!g.HasDuplicates)
+  {
+    return;
+  }
+  // The sites of each cell in the order of their first point, their points ascending.
+  g.SiteStart.assign(numberOfCells + 1, 0);
+  g.SitePoints.clear();
+  g.MemberStart.assign(1, 0);
+  g.Members.clear();
+  g.Members.reserve(g.SortedIds.size());
+  std::vector<int32_t> slots;
+  std::vector<std::pair<int32_t, int32_t>> groups; // first slot, position in `slots`
+  for (vtkIdType cell = 0; cell < numberOfCells; ++cell)
+  {
+    const int32_t first = g.CellStart[cell], last = g.CellStart[cell + 1];
+    slots.resize(last - first);
+    std::iota(slots.begin(), slots.end(), first);
+    if (cellHasCopies[cell])
+    {
+      std::sort(slots.begin(), slots.end(), byPosition);
+    }
+    groups.clear();
+    for (size_t s = 0; s < slots.size(); ++s)
+    {
+      if (s == 0 || !same(slots[s - 1], slots[s]))
+      {
+        groups.emplace_back(slots[s], static_cast<int32_t>(s));
+      }
+    }
+    std::sort(groups.begin(), groups.end());
+    for (const auto& group : groups)
+    {
+      const double* x = p + 3 * static_cast<size_t>(group.first);
+      g.SitePoints.insert(g.SitePoints.end(), x, x + 3);
+      for (size_t s = group.second; s < slots.size() && same(slots[s], group.first); ++s)
+      {
+        g.Members.push_back(slots[s]);
+      }
+      g.MemberStart.push_back(static_cast<int32_t>(g.Members.size()));
+    }
+    g.SiteStart[cell + 1] = g.SiteStart[cell] + static_cast<int32_t>(groups.size());
+  }
 }
 
 std::vector<vtkIdType> vtkPointCloudNeighborhoods::GetValidIds() const
@@ -918,6 +1077,19 @@ double vtkPointCloudNeighborhoods::FinishMeanSpacing()
     }
   }
   this->NumberOfDuplicatePoints = static_cast<vtkIdType>(stacked.size());
+  if (this->Grid && !stacked.empty())
+  {
+    // One query each for the nearest point at a nonzero distance: linear however many copies
+    // a stack holds (the search below, for the locator, grows with them).
+    std::vector<int32_t> table(stacked.size());
+    std::vector<double> distinct(stacked.size());
+    this->FindNearestNeighborsOnGrid(1, stacked, table, &distinct, nullptr, 0.0, 1.0, true);
+    for (size_t r = 0; r < stacked.size(); ++r)
+    {
+      nearest[stacked[r]] = distinct[r];
+    }
+    stacked.clear();
+  }
   for (int k = 8; !stacked.empty(); k *= 4)
   {
     const int kk = static_cast<int>(std::min<vtkIdType>(k, this->NumberOfValidPoints - 1));
@@ -1029,7 +1201,7 @@ bool vtkPointCloudNeighborhoods::FindNearestNeighbors(int k, const std::vector<v
 bool vtkPointCloudNeighborhoods::FindNearestNeighborsOnGrid(int k,
   const std::vector<vtkIdType>& ids, std::vector<int32_t>& table,
   std::vector<double>* nearestDistances, vtkAlgorithm* progressAlg, double progressStart,
-  double progressEnd)
+  double progressEnd, bool distinct)
 {
   const SearchGrid& g = *this->Grid;
   const vtkIdType rows = static_cast<vtkIdType>(ids.size());
@@ -1079,7 +1251,7 @@ bool vtkPointCloudNeighborhoods::FindNearestNeighborsOnGrid(int k,
   const vtkIdType queries = static_cast<vtkIdType>(slots.size());
 
   GridNeighborsWorker worker{ &g, slots.data(), order.data(), k, table.data(),
-    nearestDistances ? nearestDistances->data() : nullptr, {} };
+    nearestDistances ? nearestDistances->data() : nullptr, distinct && k == 1, {} };
   const vtkIdType batch = std::max<vtkIdType>(20000, queries / 50);
   for (vtkIdType begin = 0; begin < queries; begin += batch)
   {

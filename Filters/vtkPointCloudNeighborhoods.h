@@ -200,9 +200,12 @@ protected:
   std::string ErrorText;
 
   void BuildGrid();
+  // The distinct positions of each cell of the grid and their points, when some points coincide.
+  void BuildSites();
+  // `distinct` (k = 1 only): the nearest point at a nonzero distance.
   bool FindNearestNeighborsOnGrid(int k, const std::vector<vtkIdType>& ids,
     std::vector<int32_t>& table, std::vector<double>* nearestDistances, vtkAlgorithm* progressAlg,
-    double progressStart, double progressEnd);
+    double progressStart, double progressEnd, bool distinct = false);
 
   // Completes NearestDistances for duplicates and averages them (shared by both spacing methods).
   double FinishMeanSpacing();

@@ -3,10 +3,12 @@
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkDataSetReader.h"
+#include "vtkDataSetWriter.h"
 #include "vtkErrorCode.h"
 #include "vtkExecutive.h"
 #include "vtkIdTypeArray.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointCloudPLYReader.h"
 #include "vtkPointCloudPLYWriter.h"
 #include "vtkPointCloudTextReader.h"
@@ -26,10 +28,27 @@
 #include <cstring>
 #include <fcntl.h>
 #include <functional>
+#include <new>
 #include <numeric>
+#include <stdexcept>
+#include <csignal>
+#include <sstream>
+#include <sys/mman.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
+
+// An address sanitizer reserves terabytes of address space: no address space limit under it.
+#if defined(__SANITIZE_ADDRESS__)
+#define FEATUREPOINTS_IO_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FEATUREPOINTS_IO_SANITIZED 1
+#endif
+#endif
 
 vtkStandardNewMacro(vtkPointCloudIO);
 
@@ -40,19 +59,116 @@ const char* const WritableExtensions[] = { "vtp", "vtk", "ply", "csv" };
 
 // Keeps the first error an algorithm reports (the observer also keeps it off the console: the
 // caller reports it, once, as one line).
+// `First`, when set, receives the message instead (shared with a CapturingOutputWindow, so that
+// it holds whichever came first).
+// Keeps the first message in `first`, except an executive's report that an algorithm failed (a
+// dump of the pipeline request, which says nothing of the cause): that one only when nothing else
+// comes, shortened to its first sentence.
+void KeepFirst(std::string& first, std::string& pipeline, const char* vtkMessage)
+{
+  std::string text = vtkPointCloudIO::MessageText(vtkMessage);
+  const size_t dump = text.find(" returned failure for request");
+  const size_t noOutput = text.find(" did not create output for port");
+  if (dump != std::string::npos || noOutput != std::string::npos)
+  {
+    if (pipeline.empty())
+    {
+      pipeline = text.substr(0, std::min(dump, noOutput)) + " failed";
+    }
+    return;
+  }
+  if (first.empty())
+  {
+    first = text;
+  }
+}
+
 class ErrorCatcher : public vtkCommand
 {
 public:
   static ErrorCatcher* New() { return new ErrorCatcher; }
   void Execute(vtkObject*, unsigned long, void* callData) override
   {
-    if (this->Message.empty())
+    KeepFirst(this->First ? *this->First : this->Message,
+      this->Pipeline ? *this->Pipeline : this->PipelineMessage,
+      static_cast<const char*>(callData));
+  }
+  std::string Message, PipelineMessage;
+  std::string* First = nullptr;
+  std::string* Pipeline = nullptr;
+};
+
+// While alive, the VTK messages that reach the output window (those of objects without an error
+// observer: a reader's internal parser, array or executive) are kept rather than printed: the
+// first error, and the first warning when warnings count as failures (the legacy reader reports a
+// short or malformed body only as a warning); other warnings go on to the previous window.
+class CapturingOutputWindow : public vtkOutputWindow
+{
+public:
+  static CapturingOutputWindow* New();
+  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
+  void Install(bool warningsFail)
+  {
+    this->WarningsFail = warningsFail;
+    this->Previous = vtkOutputWindow::GetInstance();
+    vtkOutputWindow::SetInstance(this);
+  }
+  void Uninstall()
+  {
+    if (vtkOutputWindow::GetInstance() == this)
     {
-      this->Message = vtkPointCloudIO::MessageText(static_cast<const char*>(callData));
+      vtkOutputWindow::SetInstance(this->Previous);
+    }
+    this->Previous = nullptr;
+  }
+  void DisplayText(const char* text) override { this->Keep(text); }
+  void DisplayErrorText(const char* text) override { this->Keep(text); }
+  void DisplayWarningText(const char* text) override
+  {
+    if (this->WarningsFail)
+    {
+      this->Keep(text);
+    }
+    else if (this->Previous)
+    {
+      this->Previous->DisplayWarningText(text);
     }
   }
-  std::string Message;
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  void DisplayDebugText(const char*) override {}
+  std::string Message, PipelineMessage;
+  // The message to report: the first, else the executive's.
+  const std::string& Text() const
+  {
+    return this->Message.empty() ? this->PipelineMessage : this->Message;
+  }
+
+private:
+  void Keep(const char* text) { KeepFirst(this->Message, this->PipelineMessage, text); }
+
+public:
+  vtkSmartPointer<vtkOutputWindow> Previous;
+  bool WarningsFail = false;
 };
+vtkStandardNewMacro(CapturingOutputWindow);
+
+// Installs a CapturingOutputWindow for the lifetime of the scope, whatever way it is left.
+struct ScopedCapture
+{
+  explicit ScopedCapture(bool warningsFail) { this->Window->Install(warningsFail); }
+  ~ScopedCapture() { this->Window->Uninstall(); }
+  vtkNew<CapturingOutputWindow> Window;
+};
+
+// What an exception thrown out of a reader or writer says, as one line.
+std::string ExceptionText(const std::exception& e)
+{
+  if (dynamic_cast<const std::bad_alloc*>(&e) || dynamic_cast<const std::length_error*>(&e))
+  {
+    return "not enough memory";
+  }
+  return std::string("unexpected failure (") + e.what() + ")";
+}
 
 std::string WithFile(const std::string& fileName, const std::string& message)
 {
@@ -152,6 +268,7 @@ std::string vtkPointCloudIO::MessageText(const char* vtkMessage)
 {
   std::string text = vtkMessage ? vtkMessage : "";
   // vtkErrorMacro's text: "ERROR: In FILE, line N\nCLASS (ADDRESS): MESSAGE\n\n".
+  // vtkGenericWarningMacro's: "Generic Warning: In FILE, line N\nMESSAGE\n\n".
   const size_t newline = text.find('\n');
   if (text.compare(0, 3, "ERR") == 0 || text.compare(0, 4, "Warn") == 0)
   {
@@ -160,6 +277,10 @@ std::string vtkPointCloudIO::MessageText(const char* vtkMessage)
     {
       text.erase(0, start + 3);
     }
+  }
+  else if (text.compare(0, 19, "Generic Warning: In") == 0 && newline != std::string::npos)
+  {
+    text.erase(0, newline + 1);
   }
   for (char& c : text)
   {
@@ -188,6 +309,18 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
     error = fileName + ": is a folder, not a file";
     return nullptr;
   }
+  if (!S_ISREG(info.st_mode))
+  {
+    // Opening a FIFO without a writer would block, and a device never ends.
+    error = fileName + ": is " +
+      (S_ISFIFO(info.st_mode)       ? "a FIFO (named pipe)"
+          : S_ISCHR(info.st_mode)   ? "a character device"
+          : S_ISBLK(info.st_mode)   ? "a block device"
+          : S_ISSOCK(info.st_mode)  ? "a socket"
+                                    : "not a plain file") +
+      ", not a regular file: point clouds are read from regular files";
+    return nullptr;
+  }
   if (!CanRead(extension))
   {
     error = fileName + ": cannot tell the format from the extension " +
@@ -210,6 +343,14 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
     return nullptr;
   }
 
+  const bool vtkFormat = extension == "vtp" || extension == "vtu" || extension == "vtk";
+  return vtkFormat ? ReadIsolated(fileName, extension, static_cast<double>(info.st_size), error, observer)
+                   : ReadWithReader(fileName, extension, error, observer);
+}
+
+vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& fileName,
+  const std::string& extension, std::string& error, vtkCommand* observer)
+{
   vtkSmartPointer<vtkAlgorithm> reader;
   if (extension == "ply")
   {
@@ -233,6 +374,12 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   {
     auto r = vtkSmartPointer<vtkDataSetReader>::New();
     r->SetFileName(fileName.c_str());
+    ScopedCapture capture(true);
+    if (r->ReadOutputType() < 0)
+    {
+      error = fileName + ": not a legacy VTK data set file (no header and DATASET line it can read)";
+      return nullptr;
+    }
     reader = r;
   }
   else
@@ -241,18 +388,40 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
     r->SetFileName(fileName.c_str());
     reader = r;
   }
+  // Every message of the read, the reader's own or its parts', ends as the one line of `error`;
+  // for the legacy reader a warning is a failure too (a short body is only a warning there).
+  ScopedCapture capture(extension == "vtk");
   vtkNew<ErrorCatcher> catcher;
+  catcher->First = &capture.Window->Message;
+  catcher->Pipeline = &capture.Window->PipelineMessage;
   reader->AddObserver(vtkCommand::ErrorEvent, catcher);
   if (observer)
   {
     reader->AddObserver(vtkCommand::ProgressEvent, observer);
   }
-  const int updated = reader->GetExecutive()->Update();
-  if (!updated || !catcher->Message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
+  int updated = 0;
+  try
+  {
+    updated = reader->GetExecutive()->Update();
+  }
+  catch (const std::exception& e)
+  {
+    const std::string& first = capture.Window->Text();
+    error = WithFile(fileName,
+      "cannot read: " + ExceptionText(e) + (first.empty() ? std::string() : " (" + first + ")"));
+    return nullptr;
+  }
+  const std::string& message = capture.Window->Message.empty() &&
+      reader->GetErrorCode() != vtkErrorCode::NoError
+    ? capture.Window->Message
+    : capture.Window->Text();
+  if (!updated || !message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const unsigned long code = reader->GetErrorCode();
+    const bool ours = extension == "ply" || extension == "pts" || extension == "xyz" ||
+      extension == "txt" || extension == "csv";
     error = WithFile(fileName,
-      !catcher->Message.empty() ? catcher->Message
+      !message.empty() ? (ours ? message : "cannot read: " + message)
         : code != vtkErrorCode::NoError
         ? std::string("cannot read: ") + vtkErrorCode::GetStringFromErrorCode(code)
         : std::string("cannot read: not a valid ." + extension + " file"));
@@ -266,9 +435,209 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
       ", not a point set";
     return nullptr;
   }
+  // A malformed legacy file can leave arrays shorter than the points.
+  vtkPointData* pd = points->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = pd->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() != points->GetNumberOfPoints())
+    {
+      error = fileName + ": cannot read: point array '" +
+        (array->GetName() ? MessageText(array->GetName()) : std::string("(no name)")) + "' has " +
+        std::to_string(array->GetNumberOfTuples()) + " values for " +
+        std::to_string(points->GetNumberOfPoints()) + " points";
+      return nullptr;
+    }
+  }
   vtkSmartPointer<vtkPointSet> result;
   result.TakeReference(points->NewInstance());
   result->ShallowCopy(points);
+  return result;
+}
+
+namespace
+{
+double ReaderTimeLimitSeconds = 0.0;
+
+// Writes all of `text` to `fd`.
+void WriteAll(int fd, const std::string& text)
+{
+  for (size_t done = 0; done < text.size();)
+  {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n <= 0 && errno != EINTR)
+    {
+      return;
+    }
+    done += n > 0 ? static_cast<size_t>(n) : 0;
+  }
+}
+} // namespace
+
+void vtkPointCloudIO::SetReaderTimeLimit(double seconds)
+{
+  ReaderTimeLimitSeconds = seconds > 0.0 ? seconds : 0.0;
+}
+
+double vtkPointCloudIO::GetReaderTimeLimit()
+{
+  return ReaderTimeLimitSeconds;
+}
+
+vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fileName,
+  const std::string& extension, double fileSize, std::string& error, vtkCommand* observer)
+{
+  // VTK's readers crash or loop on some malformed files (a cut or corrupt legacy body, a huge
+  // NumberOfComponents, a bad compressed block): they run in a child process under a time and a
+  // memory limit, which hands the cloud back as a legacy binary VTK file in an anonymous memory
+  // file (its own output, which the legacy reader reads safely), or its one-line error.
+  const int memory = ::memfd_create("featurepoints-read", MFD_CLOEXEC);
+  if (memory < 0)
+  {
+    return ReadWithReader(fileName, extension, error, observer);
+  }
+  const double limit =
+    ReaderTimeLimitSeconds > 0.0 ? ReaderTimeLimitSeconds : 60.0 + fileSize / 4e6;
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0)
+  {
+    ::close(memory);
+    return ReadWithReader(fileName, extension, error, observer);
+  }
+  if (pid == 0)
+  {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL); // ends with its parent (killed by a signal, say)
+    std::signal(SIGALRM, SIG_DFL);
+    const rlimit core = { 0, 0 };
+    ::setrlimit(RLIMIT_CORE, &core);
+#ifndef FEATUREPOINTS_IO_SANITIZED
+    // No more address space than the machine has memory: a huge declared count fails at once.
+    const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+    if (pages > 0 && pageSize > 0)
+    {
+      const rlim_t bytes = static_cast<rlim_t>(pages) * static_cast<rlim_t>(pageSize);
+      const rlimit space = { bytes, bytes };
+      ::setrlimit(RLIMIT_AS, &space);
+    }
+#endif
+    ::alarm(static_cast<unsigned>(std::min(limit, 1e6)));
+    std::string childError;
+    vtkSmartPointer<vtkPointSet> cloud;
+    try
+    {
+      cloud = ReadWithReader(fileName, extension, childError, observer);
+    }
+    catch (const std::exception& e)
+    {
+      childError = WithFile(fileName, "cannot read: " + ExceptionText(e));
+    }
+    if (!cloud)
+    {
+      WriteAll(memory, childError);
+      ::_exit(3);
+    }
+    vtkNew<vtkDataSetWriter> writer;
+    writer->SetInputData(cloud);
+    writer->SetFileTypeToBinary();
+    const std::string path = "/proc/self/fd/" + std::to_string(memory);
+    writer->SetFileName(path.c_str());
+    ScopedCapture capture(false);
+    try
+    {
+      if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError)
+      {
+        WriteAll(memory, fileName + ": cannot read: not enough memory to hand the cloud over");
+        ::_exit(3);
+      }
+    }
+    catch (const std::exception& e)
+    {
+      ::ftruncate(memory, 0);
+      ::lseek(memory, 0, SEEK_SET);
+      WriteAll(memory, WithFile(fileName, "cannot read: " + ExceptionText(e)));
+      ::_exit(3);
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+  {
+  }
+  auto readText = [memory]() {
+    std::string text;
+    char buffer[4096];
+    ::lseek(memory, 0, SEEK_SET);
+    for (ssize_t n; (n = ::read(memory, buffer, sizeof(buffer))) > 0 && text.size() < 65536;)
+    {
+      text.append(buffer, static_cast<size_t>(n));
+    }
+    return text;
+  };
+  vtkSmartPointer<vtkPointSet> result;
+  if (WIFSIGNALED(status))
+  {
+    const int signal = WTERMSIG(status);
+    std::ostringstream m;
+    if (signal == SIGALRM || signal == SIGXCPU)
+    {
+      m << fileName << ": cannot read: VTK's reader did not finish within " << limit
+        << " s: the file is malformed (or larger than it looks)";
+    }
+    else
+    {
+      m << fileName << ": cannot read: VTK's reader failed on the file (" << strsignal(signal)
+        << "): the file is malformed";
+    }
+    error = m.str();
+  }
+  else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  {
+    error = readText();
+    if (error.empty())
+    {
+      error = fileName + ": cannot read: VTK's reader failed on the file";
+    }
+  }
+  else
+  {
+    vtkNew<vtkDataSetReader> reader;
+    const std::string path = "/proc/self/fd/" + std::to_string(memory);
+    reader->SetFileName(path.c_str());
+    reader->ReadAllScalarsOn();
+    reader->ReadAllVectorsOn();
+    reader->ReadAllNormalsOn();
+    reader->ReadAllTensorsOn();
+    reader->ReadAllColorScalarsOn();
+    reader->ReadAllTCoordsOn();
+    reader->ReadAllFieldsOn();
+    ScopedCapture capture(false);
+    try
+    {
+      reader->Update();
+      result = vtkPointSet::SafeDownCast(reader->GetOutput());
+    }
+    catch (const std::exception& e)
+    {
+      result = nullptr;
+      capture.Window->Message = ExceptionText(e);
+    }
+    if (!result || !capture.Window->Text().empty())
+    {
+      error = fileName + ": cannot read: " +
+        (capture.Window->Text().empty() ? std::string("the reader's output was lost")
+                                        : capture.Window->Text());
+      result = nullptr;
+    }
+    else
+    {
+      vtkSmartPointer<vtkPointSet> copy;
+      copy.TakeReference(result->NewInstance());
+      copy->ShallowCopy(result);
+      result = copy;
+    }
+  }
+  ::close(memory);
   return result;
 }
 
@@ -330,12 +699,20 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
       "; writable: " + GetWritableExtensions();
     return false;
   }
+  // No signal between creating the temporary file and naming it for the signal handlers.
+  sigset_t all, previous;
+  sigfillset(&all);
+  ::sigprocmask(SIG_BLOCK, &all, &previous);
   const std::string temporary = CreateTemporaryFile(fileName, error);
+  if (!temporary.empty())
+  {
+    std::snprintf(TemporaryInProgress, sizeof(TemporaryInProgress), "%s", temporary.c_str());
+  }
+  ::sigprocmask(SIG_SETMASK, &previous, nullptr);
   if (temporary.empty())
   {
     return false;
   }
-  std::snprintf(TemporaryInProgress, sizeof(TemporaryInProgress), "%s", temporary.c_str());
 
   // vtkXMLWriter is not a vtkWriter: keep the algorithm and its Write().
   vtkSmartPointer<vtkAlgorithm> writer;
@@ -374,18 +751,39 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
     writer = w;
     write = [w]() { return w->Write(); };
   }
+  ScopedCapture capture(false);
   vtkNew<ErrorCatcher> catcher;
+  catcher->First = &capture.Window->Message;
+  catcher->Pipeline = &capture.Window->PipelineMessage;
   writer->AddObserver(vtkCommand::ErrorEvent, catcher);
   if (observer)
   {
     writer->AddObserver(vtkCommand::ProgressEvent, observer);
   }
-  const int written = write();
-  bool ok = written == 1 && catcher->Message.empty() &&
-    writer->GetErrorCode() == vtkErrorCode::NoError;
+  int written = 0;
+  std::string thrown;
+  try
+  {
+    written = write();
+  }
+  catch (const std::exception& e)
+  {
+    thrown = "cannot write: " + ExceptionText(e);
+  }
+  const unsigned long code = writer->GetErrorCode();
+  bool ok = written == 1 && capture.Window->Text().empty() && thrown.empty() &&
+    code == vtkErrorCode::NoError;
   if (!ok)
   {
-    std::string message = catcher->Message;
+    // The cause, else the error code (the writers' own words for a full disk), else the
+    // executive's report.
+    std::string message = !thrown.empty() ? thrown
+      : !capture.Window->Message.empty() ? capture.Window->Message
+      : code == vtkErrorCode::OutOfDiskSpaceError
+      ? std::string("cannot write: out of disk space (or past the file size limit)")
+      : code != vtkErrorCode::NoError
+      ? std::string("cannot write: ") + vtkErrorCode::GetStringFromErrorCode(code)
+      : capture.Window->PipelineMessage;
     // The writers name the temporary file; the user knows the target.
     const size_t at = message.find(temporary);
     if (at != std::string::npos)

@@ -60,6 +60,17 @@ public:
   static vtkSmartPointer<vtkPointSet> Read(
     const std::string& fileName, std::string& error, vtkCommand* observer = nullptr);
 
+  ///@{
+  /**
+   * VTK's own readers (.vtp, .vtu, .vtk) run in a child process, so that a malformed file that
+   * makes them crash or loop ends in a message rather than in a crash or a hang: the child has this
+   * many seconds (0, the default: 60 s plus 1 s per 4 MB of file) and no more address space than
+   * the machine has memory.
+   */
+  static void SetReaderTimeLimit(double seconds);
+  static double GetReaderTimeLimit();
+  ///@}
+
   /**
    * Writes `data` in the format of `extension` (the file name's own when empty) to a temporary
    * file beside `fileName`, then renames it to `fileName`. Returns false and sets `error` (one
@@ -94,6 +105,13 @@ public:
 
 protected:
   vtkPointCloudIO() = default;
+
+  // Read() once the file is known to exist: with the reader of the extension, in this process.
+  static vtkSmartPointer<vtkPointSet> ReadWithReader(const std::string& fileName,
+    const std::string& extension, std::string& error, vtkCommand* observer);
+  // ReadWithReader() in a child process, under the limits of SetReaderTimeLimit().
+  static vtkSmartPointer<vtkPointSet> ReadIsolated(const std::string& fileName,
+    const std::string& extension, double fileSize, std::string& error, vtkCommand* observer);
   ~vtkPointCloudIO() override = default;
 
 private:

@@ -170,6 +170,7 @@ struct Element
   std::string Name;
   uint64_t Count = 0;
   std::vector<Property> Properties;
+  std::set<std::string> PropertyNames; // to find a repeated name without a quadratic search
 };
 
 enum class Format
@@ -601,13 +602,10 @@ bool PLYParser::ReadHeader()
         }
         p.Name = std::string(w[2]);
       }
-      for (const Property& q : current->Properties)
+      if (!current->PropertyNames.insert(p.Name).second)
       {
-        if (q.Name == p.Name)
-        {
-          return bad(
-            "second property named " + quote(p.Name) + " in element " + quote(current->Name));
-        }
+        return bad(
+          "second property named " + quote(p.Name) + " in element " + quote(current->Name));
       }
       current->Properties.push_back(p);
     }
@@ -815,6 +813,14 @@ bool PLYParser::Prepare(const Element& vertex, vtkPolyData* output)
       }
     }
     add({ name, props[i].Type, { i }, Output::Plain });
+  }
+
+  if (outputs.size() - 1 > vtkPointCloudPLYReader::MaximumNumberOfArrays)
+  {
+    return this->Fail("the vertex element has " + std::to_string(outputs.size() - 1) +
+      " properties besides x, y, z (as point arrays); at most " +
+      std::to_string(vtkPointCloudPLYReader::MaximumNumberOfArrays) +
+      " are read (name the properties of one array NAME_0, NAME_1, ...)");
   }
 
   // vtkPointData keeps one array per name: a clash (a scalar "Normals" beside nx, ny, nz) gets a

@@ -16,6 +16,8 @@
  *   arrays that way).
  * - Every other scalar property becomes a 1-component array with its name and type (char,
  *   uchar, short, ushort, int, uint, float, double and their int8 ... float64 aliases).
+ * - At most MaximumNumberOfArrays arrays besides the points (each array costs time per array
+ *   in VTK's point data: 100,000 properties would take minutes); more is an error.
  * - List properties of the vertex element are skipped (with a warning). Other elements (faces,
  *   edges, ...) are skipped: a mesh's vertices are read as a point cloud.
  *
@@ -36,7 +38,8 @@
 #include "FeaturePointsIOModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <string> // For ErrorMessage
+#include <cstddef> // For size_t
+#include <string>  // For ErrorMessage
 
 class FEATUREPOINTSIO_EXPORT vtkPointCloudPLYReader : public vtkPolyDataAlgorithm
 {
@@ -57,6 +60,9 @@ public:
   vtkGetMacro(CreateVertexCells, bool);
   vtkBooleanMacro(CreateVertexCells, bool);
   ///@}
+
+  /** The most point arrays a file may give besides the points (more is an error). */
+  static constexpr size_t MaximumNumberOfArrays = 1000;
 
   /** The message of the last error ("" after a successful read). */
   const std::string& GetErrorMessage() const { return this->ErrorMessage; }

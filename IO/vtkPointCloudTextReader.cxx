@@ -118,6 +118,27 @@ void Split(std::string_view line, char delimiter, std::vector<std::string_view>&
   }
 }
 
+// The field separator, from the first line that is not a comment: the format's own (blanks for
+// XYZ/TXT/PTS, commas for CSV), unless the line has none of it and has another: commas (or
+// semicolons) in a .xyz/.txt file, semicolons or tabs in a .csv file.
+char SniffDelimiter(std::string_view line, int format)
+{
+  const bool comma = line.find(',') != std::string_view::npos;
+  const bool semicolon = line.find(';') != std::string_view::npos;
+  const bool tab = line.find('\t') != std::string_view::npos;
+  const bool blank = std::any_of(line.begin(), line.end(),
+    [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; });
+  if (format == vtkPointCloudTextReader::CSV)
+  {
+    return comma ? ',' : semicolon ? ';' : tab ? '\t' : blank ? ' ' : ',';
+  }
+  if (format == vtkPointCloudTextReader::XYZ)
+  {
+    return comma ? ',' : semicolon ? ';' : ' ';
+  }
+  return ' ';
+}
+
 // Header names to column targets: x/y/z, nx/ny/nz as Normals, NAME:k as components of NAME.
 std::vector<ColumnTarget> TargetsFromHeader(
   const std::vector<std::string>& names, std::vector<ArraySpec>& arrays, std::string& problem)
@@ -143,6 +164,14 @@ std::vector<ColumnTarget> TargetsFromHeader(
     problem = "the header names no x, y and z columns";
     return {};
   }
+  // nx, ny, nz are the components of Normals only when all three are there: a lone "nx" is a
+  // column of its own (as "Normals" it would be replaced by the filters' normals).
+  int normalColumns = 0;
+  for (size_t c = 0; c < n; ++c)
+  {
+    const std::string lower = Lower(names[c]);
+    normalColumns |= lower == "nx" ? 1 : lower == "ny" ? 2 : lower == "nz" ? 4 : 0;
+  }
   std::map<std::string, int> arrayIndex;
   for (size_t c = 0; c < n; ++c)
   {
@@ -153,7 +182,7 @@ std::vector<ColumnTarget> TargetsFromHeader(
     std::string name = names[c];
     int component = 0;
     const std::string lower = Lower(name);
-    if (lower == "nx" || lower == "ny" || lower == "nz")
+    if (normalColumns == 7 && (lower == "nx" || lower == "ny" || lower == "nz"))
     {
       component = lower[1] - 'x';
       name = "Normals";
@@ -164,7 +193,8 @@ std::vector<ColumnTarget> TargetsFromHeader(
       int k = 0;
       if (colon != std::string::npos && colon + 1 < name.size() &&
         std::from_chars(name.data() + colon + 1, name.data() + name.size(), k).ptr ==
-          name.data() + name.size())
+          name.data() + name.size() &&
+        k >= 0)
       {
         component = k;
         name.erase(colon);
@@ -180,20 +210,38 @@ std::vector<ColumnTarget> TargetsFromHeader(
     targets[c].Component = component;
     arrays[found->second].Components = std::max(arrays[found->second].Components, component + 1);
   }
+  if (arrays.size() > vtkPointCloudTextReader::MaximumNumberOfArrays)
+  {
+    problem = "the header names " + std::to_string(arrays.size()) +
+      " point arrays besides x, y, z; at most " +
+      std::to_string(vtkPointCloudTextReader::MaximumNumberOfArrays) +
+      " are read (name the columns of one array NAME:0, NAME:1, ...)";
+    return {};
+  }
   // Every component of a grouped array must have its column exactly once.
+  std::vector<std::vector<int>> seen(arrays.size());
   for (size_t a = 0; a < arrays.size(); ++a)
   {
-    std::vector<int> seen(arrays[a].Components, 0);
-    for (const ColumnTarget& t : targets)
+    if (arrays[a].Components > static_cast<int>(n))
     {
-      if (t.Array == static_cast<int>(a))
-      {
-        ++seen[t.Component];
-      }
+      problem = "the header's columns for '" + arrays[a].Name + "' do not give component 0 to " +
+        std::to_string(arrays[a].Components - 1) + " exactly once";
+      return {};
     }
+    seen[a].assign(arrays[a].Components, 0);
+  }
+  for (const ColumnTarget& t : targets)
+  {
+    if (t.Array >= 0)
+    {
+      ++seen[t.Array][t.Component];
+    }
+  }
+  for (size_t a = 0; a < arrays.size(); ++a)
+  {
     for (int k = 0; k < arrays[a].Components; ++k)
     {
-      if (seen[k] != 1)
+      if (seen[a][k] != 1)
       {
         problem = "the header's columns for '" + arrays[a].Name + "' do not give component " +
           std::to_string(k) + " exactly once";
@@ -305,6 +353,10 @@ int vtkPointCloudTextReader::RequestData(
   {
     ++lineNumber;
     std::string_view line(text);
+    if (lineNumber == 1 && line.substr(0, 3) == "\xEF\xBB\xBF")
+    {
+      line.remove_prefix(3); // a UTF-8 byte order mark
+    }
     if (!line.empty() && line.back() == '\r')
     {
       line.remove_suffix(1);
@@ -328,19 +380,19 @@ int vtkPointCloudTextReader::RequestData(
     }
     if (first)
     {
-      if (format == CSV && trimmed.find(',') == std::string_view::npos &&
-        trimmed.find(';') != std::string_view::npos)
-      {
-        delimiter = ';';
-      }
+      delimiter = SniffDelimiter(trimmed, format);
       Split(trimmed, delimiter, fields);
-      // A header has no number at all: a line with some numbers is data, with a bad field.
-      bool header = true;
+      // A header has no finite number and some field that is no number at all ("x,y,z,nan" is
+      // a header, "nan,nan,nan" data): a line with some numbers is data, with a bad field.
+      bool header = false, finite = false;
       double value;
       for (std::string_view f : fields)
       {
-        header = header && !ParseNumber(f, value);
+        const bool number = ParseNumber(f, value);
+        header = header || !number;
+        finite = finite || (number && std::isfinite(value));
       }
+      header = header && !finite;
       if (header)
       {
         std::vector<std::string> names;
@@ -368,6 +420,13 @@ int vtkPointCloudTextReader::RequestData(
         return fail(vtkErrorCode::FileFormatError, lineNumber,
           "a point needs 3 coordinates; the line has " + std::to_string(fields.size()) +
             " field(s)");
+      }
+      if (fields.size() - 3 > vtkPointCloudTextReader::MaximumNumberOfArrays)
+      {
+        return fail(vtkErrorCode::FileFormatError, lineNumber,
+          std::to_string(fields.size()) + " fields: at most " +
+            std::to_string(vtkPointCloudTextReader::MaximumNumberOfArrays + 3) +
+            " are read (x, y, z and one point array per further column)");
       }
       targets = TargetsByPosition(fields.size(), format == PTS, arrays);
       first = false;

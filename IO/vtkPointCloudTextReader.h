@@ -6,16 +6,21 @@
  * One point per line; the first three columns are x, y, z unless a header names them. Every
  * other column becomes a point-data array, so nothing in the file is lost:
  *
- * - Header: the first non-comment line is a header when none of its fields is a number. A
+ * - Header: the first non-comment line is a header when none of its fields is a finite number
+ *   and some field is no number at all (a UTF-8 byte order mark before it is skipped). A
  *   header's `x`, `y`, `z` columns (any case, CloudCompare's `//X` too) are the coordinates;
- *   `nx`, `ny`, `nz` become `Normals` (active normals); columns `NAME:0` ... `NAME:<k-1>`
+ *   `nx`, `ny`, `nz`, when all three are there, become `Normals` (active normals; one or two of
+ *   them stay columns of their own); columns `NAME:0` ... `NAME:<k-1>`
  *   (as vtkPointCloudTextWriter and vtkDelimitedTextWriter write them) become one k-component
  *   array `NAME`; any other column a double array with the header's name.
  * - Without a header, the extra columns are named `Field 3`, `Field 4`, ... (0-based, as
  *   vtkDelimitedTextReader names them); a PTS file's 4th column is `Intensity` and its last
  *   three `RGB` (unsigned char, active scalars) when there are 6 or 7 columns.
  * - Empty lines and lines starting with `#` are skipped. CSV fields are separated by commas
- *   (or by semicolons when the first line has no comma), with optional blanks around them.
+ *   (or by semicolons, tabs or blanks when the first line has no comma), with optional blanks
+ *   around them; XYZ/TXT fields by blanks, or by commas (semicolons) when the first line has any.
+ * - At most MaximumNumberOfArrays point arrays besides the coordinates (each array costs time
+ *   per array in VTK's point data: a file of 100,000 columns would take minutes).
  *
  * Points are double precision. With CreateVertexCells on (default) the output has one vertex
  * cell per point.
@@ -37,7 +42,8 @@
 #include "FeaturePointsIOModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <string> // For ErrorMessage
+#include <cstddef> // For size_t
+#include <string>  // For ErrorMessage
 
 class FEATUREPOINTSIO_EXPORT vtkPointCloudTextReader : public vtkPolyDataAlgorithm
 {
@@ -72,6 +78,9 @@ public:
   vtkGetMacro(CreateVertexCells, bool);
   vtkBooleanMacro(CreateVertexCells, bool);
   ///@}
+
+  /** The most point arrays a file may give besides the coordinates (more is an error). */
+  static constexpr size_t MaximumNumberOfArrays = 1000;
 
   /** The message of the last error ("" after a successful read). */
   const std::string& GetErrorMessage() const { return this->ErrorMessage; }

@@ -11,8 +11,11 @@
 #include "vtkCommand.h"
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
+#include "vtkDoubleArray.h"
 #include "vtkFeatureCurveExtraction.h"
 #include "vtkFeaturePointExtraction.h"
+#include "vtkFieldData.h"
+#include "vtkLogger.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -52,6 +55,7 @@
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -64,6 +68,10 @@ namespace
 constexpr int ExitSuccess = 0;
 constexpr int ExitFailure = 1;
 constexpr int ExitUsage = 2;
+
+// The length, in the input's units, of one unit of the frame the method ran in (1 unless
+// ScaledFrame scaled the cloud).
+double LengthUnit = 1.0;
 
 using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point since)
@@ -90,6 +98,9 @@ struct Method
   // Whether the output's FeatureType array holds vtkCreaseVotingFeatures::FeatureTypes: the
   // summary then counts the feature points of each type.
   bool FeatureTypes = false;
+  // The output arrays measured in the cloud's units, with the power of the length they scale
+  // with (SSI is a length, PDI an inverse length): see ScaledFrame.
+  std::vector<std::pair<const char*, int>> LengthArrays = {};
 };
 
 vtkCreaseVotingFeatures* Crease(vtkFeaturePointDetector* f)
@@ -109,7 +120,7 @@ const std::vector<Method>& Methods()
       [] { return vtkSmartPointer<vtkCreaseVotingFeatures>::New(); },
       [](vtkFeaturePointDetector* f) {
         std::ostringstream s;
-        s << ", noise sigma " << std::setprecision(6) << Crease(f)->GetNoiseSigma();
+        s << ", noise sigma " << std::setprecision(6) << Crease(f)->GetNoiseSigma() * LengthUnit;
         return s.str();
       },
       [](vtkFeaturePointDetector* f) {
@@ -123,14 +134,17 @@ const std::vector<Method>& Methods()
     { "huang2023",
       "the proposed method: SSI and PDI mixed into F, voxel density pre-filter (Huang, Chen, "
       "Zhang, Lu 2023)",
-      [] { return vtkSmartPointer<vtkFeaturePointExtraction>::New(); } },
+      [] { return vtkSmartPointer<vtkFeaturePointExtraction>::New(); }, nullptr, nullptr, false,
+      { { "SSI", 1 }, { "PDI", -1 } } },
     { "ssi", "baseline: Smooth Shrink Index alone (Nie 2016), score F = SSI / spacing",
-      [] { return vtkSmartPointer<vtkSmoothShrinkIndexFeatures>::New(); } },
+      [] { return vtkSmartPointer<vtkSmoothShrinkIndexFeatures>::New(); }, nullptr, nullptr,
+      false, { { "SSI", 1 }, { "PDI", -1 } } },
     { "pca", "baseline: PCA surface variation lambda0 / (lambda0 + lambda1 + lambda2)",
       [] { return vtkSmartPointer<vtkSurfaceVariationFeatures>::New(); } },
     { "wang-yuan", "baseline: curvature, normal angle and density (Wang & Yuan, as the paper "
                    "describes it)",
-      [] { return vtkSmartPointer<vtkCurvatureDensityFeatures>::New(); } },
+      [] { return vtkSmartPointer<vtkCurvatureDensityFeatures>::New(); }, nullptr, nullptr, false,
+      { { "Density", -1 } } },
   };
   return methods;
 }
@@ -465,7 +479,7 @@ void PrintHelp()
     "                        FeatureType, CreaseAngle, Length; point array Tangent), .csv (one\n"
     "                        line per vertex: x, y, z, CurveId, Tangent) or .obj (l lines);\n"
     "                        the output gets CurveId, --screenshot draws the curves\n"
-    "  --size WxH            picture size (default 1200x900)\n"
+    "  --size WxH            picture size (default 1200x900; at most 4096x4096 pixels)\n"
     "  --threads N           number of threads (default: all cores)\n"
     "  --quiet               print nothing but errors\n"
     "  --help                this text\n"
@@ -795,6 +809,9 @@ bool RenderPicture(vtkPolyData* result, const char* scoreName, double threshold,
 // ---------------------------------------------------------------------------------------------
 // Command line
 
+// The largest picture --size accepts, in pixels.
+constexpr long long MaxPicturePixels = 4096LL * 4096LL;
+
 struct Settings
 {
   std::string Input, Output, Screenshot;
@@ -933,6 +950,15 @@ Settings ParseArguments(int argc, char* argv[])
       {
         Fail(ExitUsage, "--size takes WIDTHxHEIGHT in pixels, each from 16 to 8192; got '" + v + "'");
       }
+      // An offscreen picture takes about 64 bytes per pixel in all (colour, depth and copies):
+      // 8192x8192 would take over 4 GB and most of a minute.
+      if (static_cast<long long>(w) * h > MaxPicturePixels)
+      {
+        Fail(ExitUsage, "--size " + v + " is " + FormatNumber(std::round(w * (h / 1e5)) / 10) +
+            " megapixels, about " + FormatNumber(std::ceil(64.0 * w * h / 1e8) / 10) +
+            " GB to render: at most " + FormatNumber(std::round(MaxPicturePixels / 1e5) / 10) +
+            " megapixels (e.g. 4096x4096)");
+      }
       s.Width = w;
       s.Height = h;
     }
@@ -969,7 +995,8 @@ Settings ParseArguments(int argc, char* argv[])
       {
         Fail(ExitUsage, "--" + name + " takes a number; got '" + v + "'");
       }
-      else if (number < o->Min || number > o->Max || (o->Integer && number != std::floor(number)))
+      else if ((number < o->Min && o->Min > -1e299) || (number > o->Max && o->Max < 1e299) ||
+        (o->Integer && number != std::floor(number)))
       {
         Fail(ExitUsage, "--" + name + " " + v + " is out of range: " +
             (o->Integer ? "a whole number" : "a number") + " from " + FormatNumber(o->Min) +
@@ -1012,6 +1039,171 @@ Settings ParseArguments(int argc, char* argv[])
   return s;
 }
 
+// The input's point arrays that the method's own arrays of the same name replace in the output
+// (the input's Normals, for instance): one line each, so that no column is lost without a word.
+void WarnReplacedArrays(vtkPointSet* input, vtkPolyData* result)
+{
+  vtkPointData* in = input->GetPointData();
+  vtkPointData* out = result->GetPointData();
+  for (int a = 0; a < in->GetNumberOfArrays() && !Quiet; ++a)
+  {
+    vtkAbstractArray* array = in->GetAbstractArray(a);
+    const char* name = array ? array->GetName() : nullptr;
+    vtkAbstractArray* written = name ? out->GetAbstractArray(name) : nullptr;
+    if (written && written != array)
+    {
+      std::fprintf(stderr,
+        "featurepoints: note: the input's point array '%s' is replaced by the method's own\n", name);
+    }
+  }
+}
+
+// The power of two by which to scale the cloud so that squares and products of its coordinate
+// differences neither overflow nor underflow (0: leave it as it is). Clouds whose extent lies
+// within 2^-64 .. 2^64 are left alone (their results do not change); others are scaled to a
+// robust extent near 1 (the central 99 % of the points on each axis, so that one far point does
+// not shrink the rest into underflow). A power of two scales every coordinate exactly.
+int ScaledFrameExponent(vtkPointSet* cloud)
+{
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  double bounds[6];
+  cloud->GetPoints()->GetBounds(bounds);
+  const double extent =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  if (!(extent > 0.0) || (extent >= std::ldexp(1.0, -64) && extent <= std::ldexp(1.0, 64)))
+  {
+    return 0;
+  }
+  const vtkIdType stride = std::max<vtkIdType>(1, n / 100000);
+  double robust = 0.0;
+  std::vector<double> sample;
+  for (int a = 0; a < 3; ++a)
+  {
+    sample.clear();
+    for (vtkIdType i = 0; i < n; i += stride)
+    {
+      sample.push_back(cloud->GetPoint(i)[a]);
+    }
+    const size_t lo = sample.size() / 200, hi = sample.size() - 1 - sample.size() / 200;
+    std::nth_element(sample.begin(), sample.begin() + lo, sample.end());
+    const double qlo = sample[lo];
+    std::nth_element(sample.begin(), sample.begin() + hi, sample.end());
+    robust = std::max(robust, sample[hi] - qlo);
+  }
+  // An overflowing span (coordinates near +-1.8e308) counts as the largest double.
+  const double span = robust > 0.0 ? std::min(robust, VTK_DOUBLE_MAX) : std::min(extent, VTK_DOUBLE_MAX);
+  const int power = std::ilogb(span);
+  return power >= -64 && power <= 64 ? 0 : -power; // a few far outliers alone: left as they are
+}
+
+// The cloud with its coordinates multiplied by 2^exponent (double precision) and the same point
+// data: what the method runs on when ScaledFrameExponent() is not 0.
+vtkSmartPointer<vtkPolyData> ScaledFrame(vtkPointSet* cloud, int exponent)
+{
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  double x[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    cloud->GetPoint(i, x);
+    for (double& c : x)
+    {
+      c = std::ldexp(c, exponent);
+    }
+    points->SetPoint(i, x);
+  }
+  auto scaled = vtkSmartPointer<vtkPolyData>::New();
+  scaled->SetPoints(points);
+  scaled->GetPointData()->ShallowCopy(cloud->GetPointData());
+  return scaled;
+}
+
+// Back to the input's units after a run in a scaled frame: the output gets the input's points,
+// and each array measured in lengths its values in the input's units when they fit its type
+// (else it stays in the frame's units, with a note). The mean spacing field too.
+void UnscaleResult(vtkPolyData* result, vtkPointSet* cloud, const Method& method, int exponent,
+  const std::string& input)
+{
+  result->SetPoints(cloud->GetPoints());
+  for (const auto& lengthArray : method.LengthArrays)
+  {
+    vtkDataArray* a = result->GetPointData()->GetArray(lengthArray.first);
+    if (!a)
+    {
+      continue;
+    }
+    const int power = -exponent * lengthArray.second;
+    const double largest = a->GetDataType() == VTK_FLOAT ? VTK_FLOAT_MAX : VTK_DOUBLE_MAX;
+    const double smallest = a->GetDataType() == VTK_FLOAT ? VTK_FLOAT_MIN : VTK_DOUBLE_MIN;
+    bool fits = true;
+    for (vtkIdType i = 0; i < a->GetNumberOfValues() && fits; ++i)
+    {
+      const double v = std::abs(std::ldexp(a->GetComponent(i / a->GetNumberOfComponents(),
+                                             static_cast<int>(i % a->GetNumberOfComponents())),
+        power));
+      fits = std::isfinite(v) && v <= largest && (v == 0.0 || v >= smallest);
+    }
+    if (!fits)
+    {
+      if (!Quiet)
+      {
+        std::fprintf(stderr,
+          "featurepoints: note: %s: array '%s' is given for the cloud scaled by 2^%d (in the "
+          "input's units its values do not fit a %s)\n",
+          input.c_str(), lengthArray.first, exponent, a->GetDataTypeAsString());
+      }
+      continue;
+    }
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+      {
+        a->SetComponent(i, c, std::ldexp(a->GetComponent(i, c), power));
+      }
+    }
+    a->Modified();
+  }
+  if (auto* spacing = vtkDoubleArray::SafeDownCast(result->GetFieldData()->GetArray("MeanSpacing")))
+  {
+    spacing->SetValue(0, spacing->GetValue(0) * LengthUnit);
+  }
+}
+
+// The first computed value that is NaN or infinite, as a message ("" when there is none): such a
+// value is never written.
+std::string FindNonFinite(vtkPolyData* result, vtkPointSet* cloud)
+{
+  vtkPointData* pd = result->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    if (!array || (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE) ||
+      cloud->GetPointData()->GetArray(array->GetName()) == array)
+    {
+      continue;
+    }
+    const int k = array->GetNumberOfComponents();
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < k; ++c)
+      {
+        const double v = array->GetComponent(i, c);
+        if (!std::isfinite(v))
+        {
+          std::ostringstream m;
+          m << "the method computed " << v << " for array '" << array->GetName() << "' at point "
+            << i << " (counting from 0): the cloud's coordinates are beyond what it can compute "
+            << "with";
+          return m.str();
+        }
+      }
+    }
+  }
+  return "";
+}
+
 bool SameFile(const std::string& a, const std::string& b)
 {
   struct stat sa, sb;
@@ -1020,11 +1212,34 @@ bool SameFile(const std::string& a, const std::string& b)
 }
 } // namespace
 
+int Run(const Settings& s);
+
 int main(int argc, char* argv[])
 {
+  // VTK's messages come through the output window, as one line each, and never through VTK's
+  // logger (which prints them again, with a time stamp, on stderr).
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   vtkNew<OneLineOutputWindow> messages;
   vtkOutputWindow::SetInstance(messages);
   const Settings s = ParseArguments(argc, argv);
+  try
+  {
+    return Run(s);
+  }
+  catch (const std::bad_alloc&)
+  {
+    RemoveTemporaries(0);
+    Fail(ExitFailure, s.Input + ": not enough memory to process this cloud");
+  }
+  catch (const std::exception& e)
+  {
+    RemoveTemporaries(0);
+    Fail(ExitFailure, s.Input + ": unexpected failure (" + e.what() + ")");
+  }
+}
+
+int Run(const Settings& s)
+{
 
   // What the command line alone decides: formats, and files that must not be overwritten.
   const std::string inExt = vtkPointCloudIO::GetExtension(s.Input);
@@ -1070,11 +1285,26 @@ int main(int argc, char* argv[])
     Fail(ExitFailure, s.Screenshot + ": cannot render: this VTK renders through X and no "
                                      "display is set (run under xvfb-run -a)");
   }
-  std::signal(SIGINT, RemoveTemporaries);
-  std::signal(SIGTERM, RemoveTemporaries);
+  // Any signal that ends the program removes the temporary files first (SIGPIPE: a closed
+  // terminal or pipe on stderr; SIGXCPU: the shell's CPU time limit). Past the shell's file size
+  // limit a write fails (rather than a signal ending the program), and the writer says so.
+  for (int signal : { SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGXCPU, SIGALRM, SIGUSR1,
+         SIGUSR2 })
+  {
+    std::signal(signal, RemoveTemporaries);
+  }
+  std::signal(SIGXFSZ, SIG_IGN);
   if (s.Threads > 0)
   {
-    vtkSMPTools::Initialize(s.Threads);
+    // More threads than cores only slows the run down (and TBB says so on the console).
+    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    if (s.Threads > cores && !Quiet)
+    {
+      std::fprintf(stderr, "featurepoints: warning: --threads %d: this machine has %d core(s); "
+                           "using %d\n",
+        s.Threads, cores, cores);
+    }
+    vtkSMPTools::Initialize(std::min(s.Threads, cores));
   }
 
   vtkNew<Progress> progress;
@@ -1117,7 +1347,28 @@ int main(int argc, char* argv[])
     value.first->Apply(filter, value.second);
   }
   filter->SetOutputFeaturesOnly(false); // the picture needs every point; --features-only below
-  filter->SetInputData(cloud);
+  const int exponent = ScaledFrameExponent(cloud);
+  if (exponent != 0)
+  {
+    LengthUnit = std::ldexp(1.0, -exponent);
+    if (!Quiet)
+    {
+      double bounds[6];
+      cloud->GetPoints()->GetBounds(bounds);
+      std::fprintf(stderr,
+        "featurepoints: note: %s: the cloud spans %.3g units: the method runs on its coordinates "
+        "scaled by 2^%d, where squares of distances neither overflow nor underflow (results in "
+        "the input's units)\n",
+        s.Input.c_str(),
+        std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] }),
+        exponent);
+    }
+    filter->SetInputData(ScaledFrame(cloud, exponent));
+  }
+  else
+  {
+    filter->SetInputData(cloud);
+  }
   filter->AddObserver(vtkCommand::ProgressEvent, progress);
   struct ErrorFlag : vtkCommand
   {
@@ -1143,6 +1394,16 @@ int main(int argc, char* argv[])
     Fail(ExitFailure, s.Input + ": " + filterError->Message);
   }
   vtkPolyData* result = filter->GetOutput();
+  if (exponent != 0)
+  {
+    UnscaleResult(result, cloud, *method, exponent, s.Input);
+  }
+  const std::string nonFinite = FindNonFinite(result, cloud);
+  if (!nonFinite.empty())
+  {
+    Fail(ExitFailure, s.Input + ": " + nonFinite);
+  }
+  WarnReplacedArrays(cloud, result);
   const double grown = method->GrowThreshold ? method->GrowThreshold(filter) : std::nan("");
 
   // Curves (--lines): the output gets CurveId.
@@ -1164,12 +1425,17 @@ int main(int argc, char* argv[])
   {
     progress->Stage("rendering");
     start = Clock::now();
+    // No signal between creating the file and naming it for RemoveTemporaries.
+    sigset_t all, previous;
+    sigfillset(&all);
+    ::sigprocmask(SIG_BLOCK, &all, &previous);
     pictureTemporary = vtkPointCloudIO::CreateTemporaryFile(s.Screenshot, error);
+    std::snprintf(PictureTemporary, sizeof(PictureTemporary), "%s", pictureTemporary.c_str());
+    ::sigprocmask(SIG_SETMASK, &previous, nullptr);
     if (pictureTemporary.empty())
     {
       Fail(ExitFailure, error);
     }
-    std::snprintf(PictureTemporary, sizeof(PictureTemporary), "%s", pictureTemporary.c_str());
     std::ostringstream caption;
     caption << method->Name << ": " << filter->GetNumberOfFeaturePoints()
             << " feature points (red) of " << n << ", " << filter->GetScoreArrayName() << " > "
@@ -1229,7 +1495,8 @@ int main(int argc, char* argv[])
   {
     const vtkIdType features = filter->GetNumberOfFeaturePoints();
     std::printf("input       %s: %lld points\n", s.Input.c_str(), static_cast<long long>(n));
-    std::printf("method      %s, mean spacing %.6g%s\n", method->Name, filter->GetMeanSpacing(),
+    std::printf("method      %s, mean spacing %.6g%s\n", method->Name,
+      filter->GetMeanSpacing() * LengthUnit,
       method->Details ? method->Details(filter).c_str() : "");
     std::printf("threshold   %s > %.6g (%s)%s\n", filter->GetScoreArrayName(),
       filter->GetThresholdUsed(),

@@ -1,0 +1,654 @@
+// The featurepoints command on hostile input, run as a child process under a deadline:
+//
+//   TestFeaturePointsCLIBadInput PROGRAM FOLDER
+//
+// Huge declared counts, stacks of coincident points, files of 100,000 columns, cut or corrupt
+// legacy VTK files, clouds scaled to 1e-300 and 1e300, signals during the run, a FIFO, VTK's
+// many-line errors, a dropped column, oversized pictures and thread counts. Each case checks its
+// exit code, its one-line message, its time, and that no file is left behind.
+#include "vtkFeatureModelSource.h"
+#include "vtkNew.h"
+#include "vtkPointCloudIO.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+int Failures = 0;
+std::string Program, Folder;
+
+void Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::printf("FAILED: %s\n", what.c_str());
+    ++Failures;
+  }
+}
+
+std::string Path(const std::string& name)
+{
+  return Folder + "/" + name;
+}
+
+std::string Slurp(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void Spit(const std::string& path, const std::string& bytes)
+{
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::set<std::string> Entries()
+{
+  std::set<std::string> names;
+  if (DIR* d = ::opendir(Folder.c_str()))
+  {
+    while (dirent* e = ::readdir(d))
+    {
+      names.insert(e->d_name);
+    }
+    ::closedir(d);
+  }
+  return names;
+}
+
+struct Run
+{
+  int Code = -1;
+  bool TimedOut = false;
+  double Seconds = 0.0;
+  std::string Out, Err;
+};
+
+struct Limits
+{
+  double Timeout = 60.0;       // killed after this long (TimedOut)
+  double SignalAfter = -1.0;   // seconds after the start at which to send Signal
+  int Signal = 0;
+  std::string SignalOnMessage; // or as soon as stderr holds this text
+  long FileSizeLimit = -1;     // RLIMIT_FSIZE in bytes
+};
+
+// Runs the program with these arguments, stdout and stderr captured.
+Run Execute(const std::vector<std::string>& arguments, const Limits& limits = Limits())
+{
+  std::vector<std::string> all = { Program };
+  all.insert(all.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& a : all)
+  {
+    argv.push_back(&a[0]);
+  }
+  argv.push_back(nullptr);
+  const std::string out = Folder + "/../bad-input-stdout.txt";
+  const std::string err = Folder + "/../bad-input-stderr.txt";
+  std::fflush(nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = ::fork();
+  if (pid == 0)
+  {
+    const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(o, 1);
+    ::dup2(e, 2);
+    if (limits.FileSizeLimit >= 0)
+    {
+      const rlimit size = { static_cast<rlim_t>(limits.FileSizeLimit),
+        static_cast<rlim_t>(limits.FileSizeLimit) };
+      ::setrlimit(RLIMIT_FSIZE, &size);
+    }
+    ::execv(Program.c_str(), argv.data());
+    ::_exit(127);
+  }
+  Run run;
+  bool signalled = false;
+  int status = 0;
+  for (;;)
+  {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    run.Seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (done == pid)
+    {
+      break;
+    }
+    if (!signalled && limits.Signal &&
+      ((limits.SignalAfter >= 0.0 && run.Seconds >= limits.SignalAfter) ||
+        (!limits.SignalOnMessage.empty() &&
+          Slurp(err).find(limits.SignalOnMessage) != std::string::npos)))
+    {
+      ::kill(pid, limits.Signal);
+      signalled = true;
+    }
+    if (run.Seconds > limits.Timeout)
+    {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      run.TimedOut = true;
+      break;
+    }
+    ::usleep(2000);
+  }
+  run.Code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  run.Out = Slurp(out);
+  run.Err = Slurp(err);
+  ::unlink(out.c_str());
+  ::unlink(err.c_str());
+  return run;
+}
+
+// The lines of stderr that are not progress lines ("featurepoints: reading..." and the like).
+std::vector<std::string> Messages(const std::string& err)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(err);
+  for (std::string line; std::getline(in, line);)
+  {
+    if (line.size() < 3 || line.compare(line.size() - 3, 3, "...") != 0)
+    {
+      lines.push_back(line);
+    }
+  }
+  return lines;
+}
+
+// A failed run: its code, one message line holding `expected` (and the usage hint for code 2),
+// no VTK log text, no new file, and done within `seconds`.
+void ExpectFailure(const std::string& what, const std::vector<std::string>& arguments, int code,
+  const std::string& expected, double seconds = 20.0, const Limits& given = Limits())
+{
+  const std::set<std::string> before = Entries();
+  Limits limits = given;
+  limits.Timeout = std::max(limits.Timeout, seconds + 30.0);
+  const Run run = Execute(arguments, limits);
+  const std::vector<std::string> lines = Messages(run.Err);
+  Check(!run.TimedOut && run.Seconds < seconds,
+    what + ": took " + std::to_string(run.Seconds) + " s, at most " + std::to_string(seconds));
+  Check(run.Code == code,
+    what + ": exit code " + std::to_string(run.Code) + ", expected " + std::to_string(code));
+  Check(lines.size() == (code == 2 ? 2u : 1u),
+    what + ": " + std::to_string(lines.size()) + " message lines: " + run.Err);
+  Check(!lines.empty() && lines[0].compare(0, 15, "featurepoints: ") == 0 &&
+      lines[0].find(expected) != std::string::npos,
+    what + ": the message lacks '" + expected + "': " + run.Err);
+  Check(run.Err.find("ERROR: In") == std::string::npos && run.Err.find("ERR|") == std::string::npos &&
+      run.Err.find("vtkExecutive") == std::string::npos,
+    what + ": VTK's raw error text leaked: " + run.Err);
+  Check(Entries() == before, what + ": files left behind by a failed run");
+}
+
+// A run that must succeed within `seconds`; returns it.
+Run ExpectSuccess(const std::string& what, const std::vector<std::string>& arguments,
+  double seconds = 20.0)
+{
+  Limits limits;
+  limits.Timeout = seconds + 30.0;
+  const Run run = Execute(arguments, limits);
+  Check(!run.TimedOut && run.Seconds < seconds,
+    what + ": took " + std::to_string(run.Seconds) + " s, at most " + std::to_string(seconds));
+  Check(run.Code == 0, what + ": exit code " + std::to_string(run.Code) + ": " + run.Err);
+  return run;
+}
+
+// Whether a file written by the program has a NaN or an infinity in any of its arrays.
+bool HasNonFinite(const std::string& file)
+{
+  std::string error;
+  vtkSmartPointer<vtkPointSet> data = vtkPointCloudIO::Read(file, error);
+  if (!data)
+  {
+    return true;
+  }
+  vtkPointData* pd = data->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    for (vtkIdType i = 0; array && i < array->GetNumberOfValues(); ++i)
+    {
+      if (!std::isfinite(array->GetComponent(i / array->GetNumberOfComponents(),
+            static_cast<int>(i % array->GetNumberOfComponents()))))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+std::vector<unsigned char> MaskOf(const std::string& file)
+{
+  std::string error;
+  vtkSmartPointer<vtkPointSet> data = vtkPointCloudIO::Read(file, error);
+  auto* mask = data
+    ? vtkUnsignedCharArray::SafeDownCast(data->GetPointData()->GetArray("FeatureMask"))
+    : nullptr;
+  std::vector<unsigned char> values;
+  for (vtkIdType i = 0; mask && i < mask->GetNumberOfTuples(); ++i)
+  {
+    values.push_back(mask->GetValue(i));
+  }
+  return values;
+}
+
+// The points of a model of vtkFeatureModelSource as "x y z" lines, each coordinate multiplied by
+// `scale` (a power of two scales exactly).
+std::string ModelText(int model, vtkIdType n, double scale)
+{
+  vtkNew<vtkFeatureModelSource> source;
+  source->SetModel(model);
+  source->SetNumberOfPoints(n);
+  source->Update();
+  vtkPoints* points = source->GetOutput()->GetPoints();
+  std::ostringstream text;
+  text.precision(17);
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    text << x[0] * scale << " " << x[1] * scale << " " << x[2] * scale << "\n";
+  }
+  return text.str();
+}
+
+std::string Repeat(const std::string& line, int times)
+{
+  std::string out;
+  out.reserve(line.size() * times);
+  for (int i = 0; i < times; ++i)
+  {
+    out += line;
+  }
+  return out;
+}
+
+void HugeCounts()
+{
+  std::string points;
+  for (int i = 0; i < 100; ++i)
+  {
+    points += std::to_string(i % 7) + " " + std::to_string(i % 5) + " " + std::to_string(i) + " ";
+  }
+  Spit(Path("huge.vtp"),
+    "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+    "byte_order=\"LittleEndian\">\n<PolyData>\n<Piece NumberOfPoints=\"1000000000000\" "
+    "NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n<Points>\n"
+    "<DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">\n" +
+      points + "\n</DataArray>\n</Points>\n</Piece>\n</PolyData>\n</VTKFile>\n");
+  ExpectFailure("VTP declaring 10^12 points", { Path("huge.vtp"), Path("o.vtp") }, 1,
+    "huge.vtp: cannot read: not enough memory");
+  Spit(Path("huge.vtk"),
+    "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 1000000000000 float\n0 0 0 "
+    "1 0 0 0 1 0\n");
+  ExpectFailure("legacy VTK declaring 10^12 points", { Path("huge.vtk"), Path("o.vtp") }, 1,
+    "huge.vtk: cannot read: Unable to allocate");
+  Spit(Path("huge.ply"),
+    "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\nproperty float x\n"
+    "property float y\nproperty float z\nend_header\n" + std::string(120, '\0'));
+  ExpectFailure("PLY declaring 10^12 vertices", { Path("huge.ply"), Path("o.vtp") }, 1,
+    "huge.ply");
+}
+
+void CoincidentPoints()
+{
+  // Before: 20,000 copies did not finish in 60 s; 12,000 copies among 14,000 points took 38-57 s.
+  Spit(Path("copies.xyz"), Repeat("1 2 3\n", 20000));
+  for (const char* method : { "crease", "pca" })
+  {
+    const Run run = ExpectSuccess(std::string("20,000 copies of one point, ") + method,
+      { Path("copies.xyz"), Path("copies.csv"), "--method", method }, 10.0);
+    Check(run.Err.find("All points coincide") != std::string::npos,
+      std::string("20,000 copies, ") + method + ": no 'All points coincide' warning: " + run.Err);
+  }
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::ostringstream mixed;
+  for (int i = 0; i < 14000; ++i)
+  {
+    if (i % 7 == 0)
+    {
+      mixed << u(rng) << " " << u(rng) << " " << u(rng) << "\n";
+    }
+    else
+    {
+      mixed << "0.5 0.5 0.5\n";
+    }
+  }
+  Spit(Path("stack.xyz"), mixed.str());
+  for (const char* method : { "crease", "huang2023", "ssi", "pca", "wang-yuan" })
+  {
+    ExpectSuccess(std::string("12,000 copies among 14,000 points, ") + method,
+      { Path("stack.xyz"), Path("stack.vtp"), "--method", method, "--quiet" }, 10.0);
+    Check(!HasNonFinite(Path("stack.vtp")),
+      std::string("12,000 copies, ") + method + ": NaN or Inf in the output");
+  }
+  ::unlink(Path("copies.csv").c_str());
+  ::unlink(Path("stack.vtp").c_str());
+}
+
+void WideFiles()
+{
+  // Before: none finished in 60 s (10,000 columns: 4.7 s).
+  const int columns = 100000;
+  std::string row;
+  for (int c = 0; c < columns; ++c)
+  {
+    row += (c ? " " : "") + std::to_string(c % 10);
+  }
+  Spit(Path("wide.xyz"), row + "\n" + row + "\n" + row + "\n" + row + "\n");
+  ExpectFailure("XYZ rows of 100,000 columns", { Path("wide.xyz"), Path("o.vtp") }, 1,
+    "wide.xyz:1: 100000 fields: at most 1003 are read", 10.0);
+  std::string header = "x,y,z", csvRow = "1,2,3";
+  for (int c = 3; c < columns; ++c)
+  {
+    header += ",c" + std::to_string(c);
+    csvRow += ",0";
+  }
+  Spit(Path("wide.csv"), header + "\n" + csvRow + "\n");
+  ExpectFailure("CSV of 100,000 columns", { Path("wide.csv"), Path("o.vtp") }, 1,
+    "the header names 99997 point arrays besides x, y, z; at most 1000", 10.0);
+  std::string ply = "ply\nformat ascii 1.0\nelement vertex 1\n";
+  for (int c = 0; c < columns - 3; ++c)
+  {
+    ply += "property float p" + std::to_string(c) + "\n";
+  }
+  ply += "property float x\nproperty float y\nproperty float z\nend_header\n" + row + "\n";
+  Spit(Path("wide.ply"), ply);
+  ExpectFailure("PLY of 100,000 vertex properties", { Path("wide.ply"), Path("o.vtp") }, 1,
+    "the vertex element has 99997 properties besides x, y, z", 10.0);
+}
+
+void LegacyFiles()
+{
+  const std::string header = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\n";
+  Spit(Path("cut-header.vtk"), header.substr(0, header.size() - 6));
+  ExpectFailure("legacy VTK cut in its header", { Path("cut-header.vtk"), Path("o.vtp") }, 1,
+    "cut-header.vtk: not a legacy VTK data set file");
+  Spit(Path("cut-body.vtk"), header + "POINTS 10 float\n0 0 0 1 0 0 0 1 0\n");
+  ExpectFailure("legacy VTK cut in its body", { Path("cut-body.vtk"), Path("o.vtp") }, 1,
+    "cut-body.vtk: cannot read: Error reading ascii data");
+  Spit(Path("nan.vtk"), header + "POINTS 4 float\n0 0 0 1 nan 0 0 1 0\n0 0 1\n");
+  ExpectFailure("legacy VTK with a nan token", { Path("nan.vtk"), Path("o.vtp") }, 1,
+    "nan.vtk: cannot read");
+  std::mt19937 rng(5);
+  std::string garbage(3000, '\0');
+  for (char& c : garbage)
+  {
+    c = static_cast<char>(rng());
+  }
+  Spit(Path("garbage.vtk"), garbage);
+  ExpectFailure("garbage legacy VTK", { Path("garbage.vtk"), Path("o.vtp") }, 1,
+    "garbage.vtk: not a legacy VTK data set file");
+}
+
+void ExtremeScales()
+{
+  // A power of two scales exactly: the masks must be the unit cloud's. 1e200 in decimal: no NaN.
+  Spit(Path("unit.xyz"), ModelText(1, 6000, 1.0));
+  Spit(Path("big.xyz"), ModelText(1, 6000, std::ldexp(1.0, 700)));
+  Spit(Path("tiny.xyz"), ModelText(1, 6000, std::ldexp(1.0, -1000)));
+  Spit(Path("e200.xyz"), ModelText(1, 6000, 1e200));
+  for (const char* method : { "crease", "huang2023", "ssi", "pca", "wang-yuan" })
+  {
+    const std::string m = method;
+    ExpectSuccess("unit cloud, " + m, { Path("unit.xyz"), Path("unit.vtp"), "--method", m });
+    const std::vector<unsigned char> unit = MaskOf(Path("unit.vtp"));
+    Check(!unit.empty(), "unit cloud, " + m + ": no mask");
+    for (const char* scaled : { "big", "tiny", "e200" })
+    {
+      const std::string name = scaled;
+      const Run run = ExpectSuccess(name + " cloud, " + m,
+        { Path(name + ".xyz"), Path(name + ".vtp"), "--method", m });
+      Check(run.Err.find("scaled by 2^") != std::string::npos,
+        name + ", " + m + ": no note of the scaled frame: " + run.Err);
+      Check(run.Out.find("nan") == std::string::npos && run.Out.find("inf") == std::string::npos,
+        name + ", " + m + ": NaN or Inf in the summary: " + run.Out);
+      Check(!HasNonFinite(Path(name + ".vtp")), name + ", " + m + ": NaN or Inf in the output");
+      const std::vector<unsigned char> mask = MaskOf(Path(name + ".vtp"));
+      if (name != "e200")
+      {
+        Check(mask == unit, name + ", " + m + ": not the unit cloud's mask");
+      }
+      else
+      {
+        size_t differ = 0;
+        for (size_t i = 0; i < std::min(mask.size(), unit.size()); ++i)
+        {
+          differ += mask[i] != unit[i] ? 1 : 0;
+        }
+        Check(mask.size() == unit.size() && differ * 100 <= unit.size(),
+          "1e200 cloud, " + m + ": " + std::to_string(differ) + " mask values differ");
+      }
+    }
+  }
+  // One point at 1e30 among 20,000 on a slab: not "a straight line".
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::ostringstream slab;
+  for (int i = 0; i < 20000; ++i)
+  {
+    if (i == 777)
+    {
+      slab << "1e30 1e30 1e30\n";
+    }
+    else
+    {
+      slab << u(rng) << " " << u(rng) << " " << 0.1 * u(rng) << "\n";
+    }
+  }
+  Spit(Path("outlier.xyz"), slab.str());
+  const Run run =
+    ExpectSuccess("one point at 1e30", { Path("outlier.xyz"), Path("outlier.vtp"), "--method", "pca" });
+  Check(run.Err.find("straight line") == std::string::npos,
+    "one point at 1e30: the rest is called a straight line: " + run.Err);
+  for (const char* name : { "unit", "big", "tiny", "e200", "outlier" })
+  {
+    ::unlink(Path(std::string(name) + ".vtp").c_str());
+  }
+}
+
+void Signals()
+{
+  // Signals while reading, computing and writing (sent as soon as the progress line of the
+  // stage appears): SIGHUP, SIGPIPE and SIGQUIT leave no file, like SIGINT and SIGTERM.
+  Spit(Path("signal.xyz"), ModelText(1, 300000, 1.0));
+  for (int signal : { SIGHUP, SIGPIPE, SIGQUIT, SIGINT, SIGTERM })
+  {
+    int interruptedWriting = 0;
+    for (const char* stage : { "reading...", "extracting...", "writing...", "writing...",
+           "writing..." })
+    {
+      const std::set<std::string> before = Entries();
+      Limits limits;
+      limits.Signal = signal;
+      limits.SignalOnMessage = stage;
+      const Run run = Execute({ Path("signal.xyz"), Path("signal.csv"), "--method", "pca" }, limits);
+      const std::string what = std::string(strsignal(signal)) + " on '" + stage + "'";
+      Check(run.Code == 128 + signal || run.Code == 0,
+        what + ": exit code " + std::to_string(run.Code));
+      interruptedWriting +=
+        run.Code == 128 + signal && std::string(stage) == "writing..." ? 1 : 0;
+      std::set<std::string> after = Entries();
+      if (after.count("signal.csv"))
+      {
+        // Written before the signal came (renamed into place, whole): it must hold every point.
+        std::string error;
+        vtkSmartPointer<vtkPointSet> written = vtkPointCloudIO::Read(Path("signal.csv"), error);
+        Check(written && written->GetNumberOfPoints() == 300000,
+          what + ": a partial output file: " + error);
+        after.erase("signal.csv");
+      }
+      std::string left;
+      for (const std::string& name : after)
+      {
+        left += before.count(name) ? "" : " " + name;
+      }
+      Check(after == before, what + ": files left behind:" + left);
+      ::unlink(Path("signal.csv").c_str());
+    }
+    Check(interruptedWriting > 0,
+      std::string(strsignal(signal)) + ": no run was interrupted while writing");
+  }
+  // A FIFO without a writer: refused at once rather than waited on.
+  ::mkfifo(Path("fifo.xyz").c_str(), 0644);
+  ExpectFailure("FIFO", { Path("fifo.xyz"), Path("o.vtp") }, 1,
+    "fifo.xyz: is a FIFO (named pipe), not a regular file", 5.0);
+  ::unlink(Path("fifo.xyz").c_str());
+  ::symlink("/dev/urandom", Path("random.xyz").c_str());
+  ExpectFailure("a character device", { Path("random.xyz"), Path("o.vtp") }, 1,
+    "random.xyz: is a character device", 5.0);
+  ::unlink(Path("random.xyz").c_str());
+}
+
+void OneLineErrors()
+{
+  std::mt19937 rng(6);
+  std::string garbage(3000, '\0');
+  for (char& c : garbage)
+  {
+    c = static_cast<char>(rng());
+  }
+  Spit(Path("garbage.vtp"), garbage);
+  ExpectFailure("garbage VTP", { Path("garbage.vtp"), Path("o.vtp") }, 1,
+    "garbage.vtp: cannot read: Error parsing XML");
+  Spit(Path("cloud.xyz"), ModelText(1, 3000, 1.0));
+  ExpectSuccess("a VTP to misname", { Path("cloud.xyz"), Path("cloud.vtp"), "--quiet" });
+  ::rename(Path("cloud.vtp").c_str(), Path("polydata.vtu").c_str());
+  ExpectFailure("a VTP named .vtu", { Path("polydata.vtu"), Path("o.vtp") }, 1,
+    "polydata.vtu: cannot read: Cannot find UnstructuredGrid element");
+  Spit(Path("cut.vtu"), "<?xml version=\"1.0\"?>\n<VTKFile type=\"Unstr");
+  ExpectFailure("a cut VTU", { Path("cut.vtu"), Path("o.vtp") }, 1, "cut.vtu: cannot read");
+  // A write past the file size limit: the writer's message, once, and no file.
+  for (const char* extension : { "vtp", "vtk", "ply", "csv" })
+  {
+    Limits limits;
+    limits.FileSizeLimit = 4096;
+    ExpectFailure(std::string("a failed .") + extension + " write",
+      { Path("cloud.xyz"), Path(std::string("full.") + extension), "--quiet" }, 1,
+      std::string("full.") + extension + ": ", 20.0, limits);
+  }
+}
+
+void KeptColumns()
+{
+  // "x y z" lines to "x,y,z,nx" rows.
+  std::string rows = "x,y,z,nx\n";
+  std::istringstream in(ModelText(1, 2000, 1.0));
+  for (std::string line; std::getline(in, line);)
+  {
+    std::istringstream fields(line);
+    std::string x, y, z;
+    fields >> x >> y >> z;
+    rows += x + "," + y + "," + z + ",0.25\n";
+  }
+  Spit(Path("nx.csv"), rows);
+  ExpectSuccess("x,y,z,nx to CSV", { Path("nx.csv"), Path("nx-out.csv"), "--quiet" });
+  const std::string out = Slurp(Path("nx-out.csv"));
+  Check(out.substr(0, out.find('\n')).find(",nx,") != std::string::npos,
+    "x,y,z,nx: the CSV output lost nx: " + out.substr(0, out.find('\n')));
+  ExpectSuccess("x,y,z,nx to PLY", { Path("nx.csv"), Path("nx-out.ply"), "--quiet" });
+  const std::string ply = Slurp(Path("nx-out.ply"));
+  Check(ply.find("property double nx") != std::string::npos ||
+      ply.find("property double nx_2") != std::string::npos,
+    "x,y,z,nx: the PLY output lost nx");
+  // Other delimiters, a byte order mark, a header with a 'nan' column.
+  std::string commas, tabs;
+  std::istringstream again(ModelText(1, 2000, 1.0));
+  for (std::string line; std::getline(again, line);)
+  {
+    std::istringstream fields(line);
+    std::string x, y, z;
+    fields >> x >> y >> z;
+    commas += x + "," + y + "," + z + "\n";
+    tabs += x + "\t" + y + "\t" + z + "\n";
+  }
+  Spit(Path("commas.xyz"), commas);
+  Spit(Path("tabs.csv"), "x\ty\tz\n" + tabs);
+  Spit(Path("bom.csv"), "\xEF\xBB\xBFx,y,z\n" + commas);
+  Spit(Path("nan-header.csv"), "x,y,z,nan\n" + [&] {
+    std::string withColumn;
+    std::istringstream c(commas);
+    for (std::string line; std::getline(c, line);)
+    {
+      withColumn += line + ",1\n";
+    }
+    return withColumn;
+  }());
+  for (const char* name : { "commas.xyz", "tabs.csv", "bom.csv", "nan-header.csv" })
+  {
+    const Run run = ExpectSuccess(name, { Path(name), Path("delimited.vtp") });
+    Check(run.Out.find(": 2000 points") != std::string::npos,
+      std::string(name) + ": not read as 2000 points: " + run.Out + run.Err);
+  }
+  ::unlink(Path("nx-out.csv").c_str());
+  ::unlink(Path("nx-out.ply").c_str());
+  ::unlink(Path("delimited.vtp").c_str());
+}
+
+void Options()
+{
+  Spit(Path("small.xyz"), ModelText(1, 2000, 1.0));
+  ExpectFailure("--size 8192x8192",
+    { Path("small.xyz"), Path("o.vtp"), "--screenshot", Path("o.png"), "--size", "8192x8192" }, 2,
+    "--size 8192x8192 is 67.1 megapixels");
+  const Run run = ExpectSuccess("--threads 4096", { Path("small.xyz"), Path("t.vtp"), "--threads", "4096" });
+  Check(run.Err.find("TBB") == std::string::npos, "--threads 4096: TBB's warning: " + run.Err);
+  Check(run.Err.find("core(s); using") != std::string::npos, "--threads 4096: no note: " + run.Err);
+  ExpectSuccess("--density-contrast 1e301",
+    { Path("small.xyz"), Path("t.vtp"), "--method", "huang2023", "--density-contrast", "1e301" });
+  ::unlink(Path("t.vtp").c_str());
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc < 3)
+  {
+    std::printf("usage: TestFeaturePointsCLIBadInput PROGRAM FOLDER\n");
+    return EXIT_FAILURE;
+  }
+  Program = argv[1];
+  Folder = argv[2];
+  ::mkdir(Folder.c_str(), 0755);
+  const auto start = std::chrono::steady_clock::now();
+  HugeCounts();
+  CoincidentPoints();
+  WideFiles();
+  LegacyFiles();
+  ExtremeScales();
+  Signals();
+  OneLineErrors();
+  KeptColumns();
+  Options();
+  std::printf("bad input cases done in %.1f s, %d failure(s)\n",
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), Failures);
+  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
