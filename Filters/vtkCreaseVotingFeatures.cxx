@@ -1,6 +1,7 @@
 #include "vtkCreaseVotingFeatures.h"
 
 #include "vtkFeaturePointsLocalPCA.h"
+#include "vtkFeaturePointsStatistics.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -467,17 +468,6 @@ struct Scratch
   SheetReach Sheet;
 };
 
-double Median(std::vector<double>& v)
-{
-  if (v.empty())
-  {
-    return 0.0;
-  }
-  auto middle = v.begin() + v.size() / 2;
-  std::nth_element(v.begin(), middle, v.end());
-  return *middle;
-}
-
 // Everything one run of the detector shares between its stages: the neighbour table (renumbered
 // cloud, one row of k nearest per scored point), the fits, and the output arrays' storage. Each
 // stage is one member function; RequestData calls them in order.
@@ -606,7 +596,7 @@ void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
     }
   });
   this->Variance =
-    std::max(Median(residual), NoiseFloor * NoiseFloor * this->D * this->D);
+    std::max(featurepoints::UpperMedian(residual), NoiseFloor * NoiseFloor * this->D * this->D);
 }
 
 void CreaseRun::GatherSheet(vtkIdType r, int count, const float* normal, Scratch& s) const
@@ -1233,7 +1223,7 @@ int vtkCreaseVotingFeatures::RequestData(
   {
     values[r] = vote[ids[r]];
   }
-  this->GrowThresholdUsed = this->GrowThreshold + Median(values);
+  this->GrowThresholdUsed = this->GrowThreshold + featurepoints::UpperMedian(values);
   if (this->GrowThresholdUsed < this->ThresholdUsed)
   {
     this->NumberOfFeaturePoints += run.Grow(vote, this->GrowThresholdUsed, m);

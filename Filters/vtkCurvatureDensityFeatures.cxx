@@ -1,6 +1,7 @@
 #include "vtkCurvatureDensityFeatures.h"
 
 #include "vtkFeaturePointsLocalPCA.h"
+#include "vtkFeaturePointsStatistics.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -27,13 +28,7 @@ double MedianOf(const float* values, const std::vector<vtkIdType>& ids)
   {
     v.push_back(values[id]);
   }
-  if (v.empty())
-  {
-    return 0.0;
-  }
-  auto mid = v.begin() + v.size() / 2;
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
+  return featurepoints::UpperMedian(v);
 }
 } // namespace
 

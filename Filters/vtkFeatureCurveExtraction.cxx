@@ -10,6 +10,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointData.h"
@@ -38,24 +39,23 @@ vtkStandardNewMacro(vtkFeatureCurveExtraction);
 namespace
 {
 using V3 = Eigen::Vector3d;
-constexpr double Pi = 3.14159265358979323846;
 
 // Shape constants: angles and ratios. Lengths are parameters, in mean spacings.
-const double MaxTurnPerStep = std::cos(35.0 * Pi / 180.0); // a trace stops at a sharper turn
+const double MaxTurnPerStep = std::cos(vtkMath::RadiansFromDegrees(35.0)); // a trace stops at a sharper turn
 constexpr double MaxFlatness = 0.6;   // lambda2 / lambda1 of a line fit above this: not a line
 constexpr int MinFitPoints = 4;       // fewer trace points in a fit: nothing to follow
 constexpr double CollisionRadius = 1.5; // s: a trace joins a vertex of another this close
 constexpr double CoverRadius = 2.5;     // s: trace points this close to a vertex seed no trace
 constexpr double AssignRadius = 3.0;    // s: feature points this close to a curve get its id
-const double CornerTurn = std::cos(45.0 * Pi / 180.0); // a sharper turn within CornerWindow splits
+const double CornerTurn = std::cos(vtkMath::RadiansFromDegrees(45.0)); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
-const double BridgeCone = std::cos(30.0 * Pi / 180.0); // an end joins what lies in this cone
-const double FacingCone = std::cos(15.0 * Pi / 180.0); // ends facing each other within this
+const double BridgeCone = std::cos(vtkMath::RadiansFromDegrees(30.0)); // an end joins what lies in this cone
+const double FacingCone = std::cos(vtkMath::RadiansFromDegrees(15.0)); // ends facing each other within this
 constexpr int SmoothingPasses = 20;
 constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's points
 constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
 constexpr double SectionCore = 1.0; // s: points this near the vertex do not fit the faces' lines
-const double MinimumCreaseAngle = std::sin(10.0 * Pi / 180.0); // flatter faces: no intersection
+const double MinimumCreaseAngle = std::sin(vtkMath::RadiansFromDegrees(10.0)); // flatter faces: no intersection
 
 enum Types
 {

@@ -7,6 +7,7 @@
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointData.h"
@@ -462,7 +463,7 @@ Geometry MakeGeometry(int model, double size, double valleySlope, double separat
     case vtkFeatureModelSource::MODEL_I:
     {
       const double a = 0.15 * size;
-      const double depth = a * std::tan(valleySlope * Pi / 180.0);
+      const double depth = a * std::tan(vtkMath::RadiansFromDegrees(valleySlope));
       return Extrusion({ -h, -a, 0.0, a, h }, { 0.0, 0.0, -depth, 0.0, 0.0 }, size);
     }
     case vtkFeatureModelSource::MODEL_II:
@@ -519,7 +520,7 @@ Geometry MakeGeometry(int model, double size, double valleySlope, double separat
     {
       // The L profile in the (x, z) plane, counter-clockwise: bottom, free end, sloped and flat
       // tops of the long leg, inner face, top and back of the upright.
-      const double zc = (-0.12 + 0.4 * std::tan(20.0 * Pi / 180.0)) * size; // the crease's height
+      const double zc = (-0.12 + 0.4 * std::tan(vtkMath::RadiansFromDegrees(20.0))) * size; // the crease's height
       const double x[7] = { -0.5 * size, 0.5 * size, 0.5 * size, 0.1 * size, -0.2 * size,
         -0.2 * size, -0.5 * size };
       const double z[7] = { -0.3 * size, -0.3 * size, -0.12 * size, zc, zc, 0.3 * size,

@@ -1,5 +1,6 @@
 #include "vtkFeaturePointDetector.h"
 #include "vtkFeaturePointsLocalPCA.h"
+#include "vtkFeaturePointsStatistics.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -22,22 +23,6 @@
 #include <cmath>
 #include <cstring>
 #include <vector>
-
-namespace
-{
-double Median(std::vector<double>& v)
-{
-  const size_t n = v.size();
-  auto mid = v.begin() + n / 2;
-  std::nth_element(v.begin(), mid, v.end());
-  double m = *mid;
-  if (n % 2 == 0)
-  {
-    m = 0.5 * (m + *std::max_element(v.begin(), mid));
-  }
-  return m;
-}
-} // namespace
 
 vtkFeaturePointDetector::vtkFeaturePointDetector() = default;
 vtkFeaturePointDetector::~vtkFeaturePointDetector() = default;
@@ -77,7 +62,7 @@ double vtkFeaturePointDetector::AutomaticThreshold(
   double threshold = VTK_DOUBLE_MAX;
   for (int round = 0; round < 50; ++round)
   {
-    // The median as Median() takes it: the middle value, or the mean of the two middle values.
+    // The median as featurepoints::Median() takes it: the middle value, or the mean of the two middle values.
     const int64_t total = cumulative[kept];
     const int64_t mid = total / 2;
     double mu = atRank(mid);
@@ -121,7 +106,7 @@ double vtkFeaturePointDetector::AutomaticThreshold(
       }
     }
     const double mad = total % 2 == 0 ? 0.5 * (at + below) : at;
-    const double s = std::max(1.4826 * mad, 0.01 * std::abs(mu));
+    const double s = std::max(featurepoints::MADToSigma * mad, 0.01 * std::abs(mu));
     const double next = mu + sigmas * s;
     if (next == threshold)
     {
@@ -166,14 +151,14 @@ double vtkFeaturePointDetector::AutomaticThreshold(std::vector<double>& scores, 
   double threshold = VTK_DOUBLE_MAX;
   for (int round = 0; round < 50; ++round)
   {
-    const double mu = Median(kept);
+    const double mu = featurepoints::Median(kept);
     deviation.resize(kept.size());
     for (size_t i = 0; i < kept.size(); ++i)
     {
       deviation[i] = std::abs(kept[i] - mu);
     }
-    const double mad = Median(deviation);
-    const double s = std::max(1.4826 * mad, 0.01 * std::abs(mu));
+    const double mad = featurepoints::Median(deviation);
+    const double s = std::max(featurepoints::MADToSigma * mad, 0.01 * std::abs(mu));
     const double next = mu + sigmas * s;
     if (next == threshold)
     {
@@ -466,11 +451,8 @@ void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned
       {
         continue;
       }
-      const size_t qlo = sample.size() / 200, qhi = sample.size() - 1 - sample.size() / 200;
-      std::nth_element(sample.begin(), sample.begin() + qlo, sample.end());
-      const double rlo = sample[qlo];
-      std::nth_element(sample.begin(), sample.begin() + qhi, sample.end());
-      const double rhi = sample[qhi];
+      double rlo, rhi;
+      featurepoints::CentralRange(sample, rlo, rhi);
       lo[a] = rlo - 0.5 * (rhi - rlo);
       hi[a] = rhi + 0.5 * (rhi - rlo);
     }

@@ -1,6 +1,8 @@
 #include "vtkFeaturePointExtraction.h"
 
 #include "vtkCellArray.h"
+#include "vtkFeaturePointsDensityContrast.h"
+#include "vtkFeaturePointsLocalPCA.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -17,8 +19,6 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkVoxelDensityContrastFilter.h"
-#include "vtkFeaturePointsLocalPCA.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -223,15 +223,16 @@ int vtkFeaturePointExtraction::RequestData(
   double d = 0.0;
   // A sample of the cloud that shows no density contrast: the full test would most likely find
   // none either, and its 1-nearest pass is skipped (see the header).
-  vtkNew<vtkVoxelDensityContrastFilter> voxels;
-  voxels->SetVoxelSizeFactor(this->VoxelSizeFactor);
-  voxels->SetDensityContrast(this->DensityContrast);
-  voxels->SetContrastRule(this->VoxelContrastRule);
+  featurepoints::DensityContrast voxels;
+  voxels.VoxelSizeFactor = this->VoxelSizeFactor;
+  voxels.DensityContrast = this->DensityContrast;
+  voxels.ContrastRule = this->VoxelContrastRule;
+  voxels.Reporter = this;
   bool screen = this->UseVoxelFilter;
   if (screen)
   {
     this->BeginStage("voxel screen");
-    screen = voxels->SampleShowsContrast(neighborhoods);
+    screen = voxels.SampleShowsContrast(neighborhoods);
   }
   if (screen)
   {
@@ -265,11 +266,11 @@ int vtkFeaturePointExtraction::RequestData(
   if (screen)
   {
     this->BeginStage("voxel filter");
-    voxels->MarkCandidates(
+    voxels.MarkCandidates(
       points, valid, d, neighborhoods->GetNearestDistances().data(), isCandidate);
     // No density contrast anywhere: the cloud is uniformly sampled and the step would drop every
     // feature, so every point is scored instead.
-    scoreAll = voxels->GetNumberOfContrastVoxels() == 0;
+    scoreAll = voxels.NumberOfContrastVoxels == 0;
   }
   if (scoreAll)
   {

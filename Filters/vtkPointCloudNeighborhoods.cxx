@@ -4,6 +4,7 @@
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFeaturePointsLocalPCA.h"
+#include "vtkFeaturePointsStatistics.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkIdList.h"
@@ -758,11 +759,8 @@ void vtkPointCloudNeighborhoods::BuildGrid()
       lo[a] = this->Bounds[2 * a];
       hi[a] = this->Bounds[2 * a + 1];
       std::vector<double>& v = sample[a];
-      const size_t qlo = v.size() / 200, qhi = v.size() - 1 - v.size() / 200;
-      std::nth_element(v.begin(), v.begin() + qlo, v.end());
-      const double rlo = v[qlo];
-      std::nth_element(v.begin(), v.begin() + qhi, v.end());
-      const double rhi = v[qhi];
+      double rlo, rhi;
+      featurepoints::CentralRange(v, rlo, rhi);
       const double robust = rhi - rlo;
       if (robust > 0.0 && hi[a] - lo[a] > 4.0 * robust)
       {
@@ -1133,24 +1131,7 @@ double vtkPointCloudNeighborhoods::FinishMeanSpacing()
       positive.push_back(nearest[i]);
     }
   }
-  double limit = 0.0;
-  if (!positive.empty())
-  {
-    auto mid = positive.begin() + positive.size() / 2;
-    std::nth_element(positive.begin(), mid, positive.end());
-    limit = 10.0 * *mid;
-  }
-  double sum = 0.0;
-  vtkIdType count = 0;
-  for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
-  {
-    if (this->Valid[i] && nearest[i] > 0.0 && nearest[i] <= limit)
-    {
-      sum += nearest[i];
-      ++count;
-    }
-  }
-  this->MeanSpacing = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  this->MeanSpacing = featurepoints::MeanWithoutOutliers(positive, 10.0);
   return this->MeanSpacing;
 }
 

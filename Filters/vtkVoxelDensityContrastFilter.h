@@ -62,6 +62,10 @@
 
 class vtkPoints;
 class vtkPointCloudNeighborhoods;
+namespace featurepoints
+{
+class DensityContrast;
+}
 
 class FEATUREPOINTSFILTERS_EXPORT vtkVoxelDensityContrastFilter : public vtkPolyDataAlgorithm
 {
@@ -135,7 +139,8 @@ public:
   ///@}
 
   /**
-   * The work of the filter on bare arrays, for other filters: marks candidate[i] = 1 for the
+   * The work of the filter on bare arrays, outside the pipeline (the module's filters share the
+   * private helper that does it, featurepoints::DensityContrast): marks candidate[i] = 1 for the
    * candidates among the points with valid[i] != 0 (all points when valid is null), 0 for the
    * others, using the given spacing (> 0). `nearest` holds each point's distance to its nearest
    * other point (vtkPointCloudNeighborhoods::GetNearestDistances(); needed by BLOCK_SPACING only).
@@ -197,6 +202,9 @@ protected:
   double ReferenceLevel = 0.0;
 
 private:
+  // The figures of the last run of the test, as the getters give them.
+  void KeepFigures(const featurepoints::DensityContrast& test);
+
   vtkVoxelDensityContrastFilter(const vtkVoxelDensityContrastFilter&) = delete;
   void operator=(const vtkVoxelDensityContrastFilter&) = delete;
 };
