@@ -22,14 +22,18 @@
 #include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <new>
 #include <numeric>
+#include <random>
 #include <stdexcept>
 #include <csignal>
 #include <sstream>
@@ -57,10 +61,6 @@ namespace
 const char* const ReadableExtensions[] = { "ply", "vtp", "vtu", "vtk", "pts", "xyz", "txt", "csv" };
 const char* const WritableExtensions[] = { "vtp", "vtk", "ply", "csv" };
 
-// Keeps the first error an algorithm reports (the observer also keeps it off the console: the
-// caller reports it, once, as one line).
-// `First`, when set, receives the message instead (shared with a CapturingOutputWindow, so that
-// it holds whichever came first).
 // Keeps the first message in `first`, except an executive's report that an algorithm failed (a
 // dump of the pipeline request, which says nothing of the cause): that one only when nothing else
 // comes, shortened to its first sentence.
@@ -83,6 +83,9 @@ void KeepFirst(std::string& first, std::string& pipeline, const char* vtkMessage
   }
 }
 
+// Keeps the first error an algorithm reports (the observer also keeps it off the console: the
+// caller reports it, once, as one line). `First`, when set, receives the message instead (shared
+// with a Capture, so that it holds whichever came first).
 class ErrorCatcher : public vtkCommand
 {
 public:
@@ -98,36 +101,61 @@ public:
   std::string* Pipeline = nullptr;
 };
 
-// While alive, the VTK messages that reach the output window (those of objects without an error
-// observer: a reader's internal parser, array or executive) are kept rather than printed: the
-// first error, and the first warning when warnings count as failures (the legacy reader reports a
-// short or malformed body only as a warning); other warnings go on to the previous window.
+// What one read or write keeps of the VTK messages that reach the output window (those of
+// objects without an error observer: a reader's internal parser, array or executive): the first
+// error, and the first warning when warnings count as failures (the legacy reader reports a short
+// or malformed body only as a warning).
+struct Capture
+{
+  std::string Message, PipelineMessage;
+  bool WarningsFail = false;
+  // The message to report: the first, else the executive's.
+  const std::string& Text() const
+  {
+    return this->Message.empty() ? this->PipelineMessage : this->Message;
+  }
+  void Keep(const char* text) { KeepFirst(this->Message, this->PipelineMessage, text); }
+};
+
+// The capture of the read or write running in this thread, if any.
+thread_local Capture* CurrentCapture = nullptr;
+
+// VTK has one output window for the process. While any read or write runs, this one is it: it
+// hands each message to the capture of the thread that sent it, and the messages of threads
+// without a capture (and the warnings a capture does not keep) to the window it replaced. Reads
+// and writes in several threads at once each get their own messages.
 class CapturingOutputWindow : public vtkOutputWindow
 {
 public:
   static CapturingOutputWindow* New();
   vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
-  void Install(bool warningsFail)
+  void DisplayText(const char* text) override
   {
-    this->WarningsFail = warningsFail;
-    this->Previous = vtkOutputWindow::GetInstance();
-    vtkOutputWindow::SetInstance(this);
-  }
-  void Uninstall()
-  {
-    if (vtkOutputWindow::GetInstance() == this)
+    if (CurrentCapture)
     {
-      vtkOutputWindow::SetInstance(this->Previous);
+      CurrentCapture->Keep(text);
     }
-    this->Previous = nullptr;
+    else if (this->Previous)
+    {
+      this->Previous->DisplayText(text);
+    }
   }
-  void DisplayText(const char* text) override { this->Keep(text); }
-  void DisplayErrorText(const char* text) override { this->Keep(text); }
+  void DisplayErrorText(const char* text) override
+  {
+    if (CurrentCapture)
+    {
+      CurrentCapture->Keep(text);
+    }
+    else if (this->Previous)
+    {
+      this->Previous->DisplayErrorText(text);
+    }
+  }
   void DisplayWarningText(const char* text) override
   {
-    if (this->WarningsFail)
+    if (CurrentCapture && CurrentCapture->WarningsFail)
     {
-      this->Keep(text);
+      CurrentCapture->Keep(text);
     }
     else if (this->Previous)
     {
@@ -136,28 +164,48 @@ public:
   }
   void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
   void DisplayDebugText(const char*) override {}
-  std::string Message, PipelineMessage;
-  // The message to report: the first, else the executive's.
-  const std::string& Text() const
-  {
-    return this->Message.empty() ? this->PipelineMessage : this->Message;
-  }
-
-private:
-  void Keep(const char* text) { KeepFirst(this->Message, this->PipelineMessage, text); }
-
-public:
   vtkSmartPointer<vtkOutputWindow> Previous;
-  bool WarningsFail = false;
 };
 vtkStandardNewMacro(CapturingOutputWindow);
 
-// Installs a CapturingOutputWindow for the lifetime of the scope, whatever way it is left.
+// The installed window and how many captures use it (guarded by CaptureMutex).
+std::mutex CaptureMutex;
+int CaptureUsers = 0;
+vtkSmartPointer<CapturingOutputWindow> CaptureWindow;
+
+// Captures this thread's messages for the lifetime of the scope, whatever way it is left.
 struct ScopedCapture
 {
-  explicit ScopedCapture(bool warningsFail) { this->Window->Install(warningsFail); }
-  ~ScopedCapture() { this->Window->Uninstall(); }
-  vtkNew<CapturingOutputWindow> Window;
+  explicit ScopedCapture(bool warningsFail)
+    : Outer(CurrentCapture)
+  {
+    this->Window->WarningsFail = warningsFail;
+    CurrentCapture = this->Window.get();
+    std::lock_guard<std::mutex> lock(CaptureMutex);
+    if (CaptureUsers++ == 0)
+    {
+      CaptureWindow = vtkSmartPointer<CapturingOutputWindow>::New();
+      CaptureWindow->Previous = vtkOutputWindow::GetInstance();
+      vtkOutputWindow::SetInstance(CaptureWindow);
+    }
+  }
+  ~ScopedCapture()
+  {
+    CurrentCapture = this->Outer;
+    std::lock_guard<std::mutex> lock(CaptureMutex);
+    if (--CaptureUsers == 0)
+    {
+      if (vtkOutputWindow::GetInstance() == CaptureWindow)
+      {
+        vtkOutputWindow::SetInstance(CaptureWindow->Previous);
+      }
+      CaptureWindow = nullptr;
+    }
+  }
+  ScopedCapture(const ScopedCapture&) = delete;
+  void operator=(const ScopedCapture&) = delete;
+  std::unique_ptr<Capture> Window{ new Capture };
+  Capture* Outer;
 };
 
 // What an exception thrown out of a reader or writer says, as one line.
@@ -205,8 +253,66 @@ vtkSmartPointer<vtkPolyData> AsPolyData(vtkPointSet* data)
   return poly;
 }
 
-// The temporary file being written, for RemoveTemporaryFileInProgress-style clean-up on signals.
-char TemporaryInProgress[4096] = { 0 };
+// The temporary files that a signal handler removes (RemoveTemporaryFileInProgress): one slot
+// per file being written, so that writers in several threads each keep theirs. A slot is
+// claimed (Claimed), then holds a name (Named) until released (Free); a handler reads only the
+// named ones. The name is stored before the file is created, so a signal that comes between the
+// two, to any thread, never leaves the file behind.
+enum SlotState : int
+{
+  Free = 0,
+  Claimed = 1,
+  Named = 2,
+};
+struct TemporarySlot
+{
+  std::atomic<int> State{ Free };
+  char Name[4096];
+};
+static_assert(std::atomic<int>::is_always_lock_free, "a signal handler reads the slots");
+TemporarySlot TemporarySlots[16];
+
+// Claims a slot and stores `name` in it; -1 when every slot is taken or the name is too long.
+int RegisterTemporary(const std::string& name)
+{
+  if (name.size() >= sizeof(TemporarySlots[0].Name))
+  {
+    return -1;
+  }
+  for (int s = 0; s < static_cast<int>(sizeof(TemporarySlots) / sizeof(TemporarySlots[0])); ++s)
+  {
+    int expected = Free;
+    if (TemporarySlots[s].State.compare_exchange_strong(expected, Claimed))
+    {
+      std::memcpy(TemporarySlots[s].Name, name.c_str(), name.size() + 1);
+      TemporarySlots[s].State.store(Named);
+      return s;
+    }
+  }
+  return -1;
+}
+
+void ReleaseTemporary(int slot)
+{
+  if (slot >= 0)
+  {
+    TemporarySlots[slot].State.store(Free);
+  }
+}
+
+// A name for a temporary file beside the target: ".BASE.XXXXXX" in the target's folder, with
+// six random letters or digits (as mkstemp makes them).
+std::string TemporaryName(const std::string& prefix)
+{
+  static const char letters[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+  thread_local std::mt19937_64 random(std::random_device{}());
+  std::string name = prefix;
+  for (int i = 0; i < 6; ++i)
+  {
+    name += letters[random() % (sizeof(letters) - 1)];
+  }
+  return name;
+}
 } // namespace
 
 vtkSmartPointer<vtkCellArray> vtkPointCloudIO::MakeVertexCells(vtkIdType n)
@@ -641,28 +747,48 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fi
   return result;
 }
 
-std::string vtkPointCloudIO::CreateTemporaryFile(const std::string& fileName, std::string& error)
+std::string vtkPointCloudIO::CreateTemporaryFile(
+  const std::string& fileName, std::string& error, bool removeOnSignal)
 {
   const size_t slash = fileName.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "." : fileName.substr(0, slash + 1);
   const std::string base = slash == std::string::npos ? fileName : fileName.substr(slash + 1);
-  std::vector<char> name(
-    (folder == "." ? std::string("./") : folder).size() + base.size() + 10, '\0');
-  std::snprintf(name.data(), name.size(), "%s.%s.XXXXXX",
-    (folder == "." ? std::string("./") : folder).c_str(), base.c_str());
-  const int fd = ::mkstemp(name.data());
-  if (fd < 0)
+  const std::string prefix = (folder == "." ? std::string("./") : folder) + "." + base + ".";
+  for (int attempt = 0; attempt < 100; ++attempt)
   {
-    error = fileName + ": cannot create a file in " + (folder == "." ? "the current folder" : folder) +
-      ": " + std::strerror(errno);
-    return "";
+    const std::string name = TemporaryName(prefix);
+    const int slot = removeOnSignal ? RegisterTemporary(name) : -1;
+    // Created with the permissions of any new file (0666 less the umask).
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0)
+    {
+      ::close(fd);
+      return name;
+    }
+    const int cause = errno;
+    ReleaseTemporary(slot);
+    if (cause != EEXIST)
+    {
+      error = fileName + ": cannot create a file in " +
+        (folder == "." ? "the current folder" : folder) + ": " + std::strerror(cause);
+      return "";
+    }
   }
-  // mkstemp creates the file 0600; give it the permissions of any new file.
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  ::close(fd);
-  return name.data();
+  error = fileName + ": cannot create a file in " +
+    (folder == "." ? "the current folder" : folder) + ": no free temporary name";
+  return "";
+}
+
+void vtkPointCloudIO::ReleaseTemporaryFile(const std::string& temporary)
+{
+  for (TemporarySlot& slot : TemporarySlots)
+  {
+    if (slot.State.load() == Named && temporary == slot.Name)
+    {
+      slot.State.store(Free);
+      return;
+    }
+  }
 }
 
 bool vtkPointCloudIO::CanCreate(const std::string& fileName, std::string& error)
@@ -699,16 +825,8 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
       "; writable: " + GetWritableExtensions();
     return false;
   }
-  // No signal between creating the temporary file and naming it for the signal handlers.
-  sigset_t all, previous;
-  sigfillset(&all);
-  ::sigprocmask(SIG_BLOCK, &all, &previous);
-  const std::string temporary = CreateTemporaryFile(fileName, error);
-  if (!temporary.empty())
-  {
-    std::snprintf(TemporaryInProgress, sizeof(TemporaryInProgress), "%s", temporary.c_str());
-  }
-  ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+  // Known to the signal handlers from before it exists (see RemoveTemporaryFileInProgress).
+  const std::string temporary = CreateTemporaryFile(fileName, error, true);
   if (temporary.empty())
   {
     return false;
@@ -804,14 +922,17 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
   {
     std::remove(temporary.c_str());
   }
-  TemporaryInProgress[0] = '\0';
+  ReleaseTemporaryFile(temporary);
   return ok;
 }
 
 void vtkPointCloudIO::RemoveTemporaryFileInProgress()
 {
-  if (TemporaryInProgress[0])
+  for (TemporarySlot& slot : TemporarySlots)
   {
-    ::unlink(TemporaryInProgress);
+    if (slot.State.load() == Named)
+    {
+      ::unlink(slot.Name);
+    }
   }
 }

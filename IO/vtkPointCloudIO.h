@@ -87,13 +87,23 @@ public:
 
   /**
    * A temporary file name beside `fileName`, created empty with the permissions a new file would
-   * get; "" (and `error` set) when none can be created.
+   * get; "" (and `error` set) when none can be created. With `removeOnSignal`, the name is known
+   * to RemoveTemporaryFileInProgress() from before the file exists until ReleaseTemporaryFile(),
+   * so that a signal leaves no such file whichever thread it reaches (up to 16 such files at
+   * once; beyond that a file is created without it).
    */
-  static std::string CreateTemporaryFile(const std::string& fileName, std::string& error);
+  static std::string CreateTemporaryFile(
+    const std::string& fileName, std::string& error, bool removeOnSignal = false);
 
   /**
-   * Removes the temporary file of a Write() in progress, if any. Async-signal-safe: a program's
-   * SIGINT/SIGTERM handler calls it so that an interrupted run leaves no file behind.
+   * Forgets a temporary file of CreateTemporaryFile(..., true) once it is renamed or removed.
+   */
+  static void ReleaseTemporaryFile(const std::string& temporary);
+
+  /**
+   * Removes the temporary files of the Write() calls in progress (any number of them, from any
+   * threads) and those of CreateTemporaryFile(..., true) not yet released. Async-signal-safe: a
+   * program's SIGINT/SIGTERM handler calls it so that an interrupted run leaves no file behind.
    */
   static void RemoveTemporaryFileInProgress();
 

@@ -39,6 +39,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersion.h"
 #include "vtkWindowToImageFilter.h"
+#include "vtksys/SystemTools.hxx"
 
 #include "featurepointsLines.h"
 
@@ -54,9 +55,8 @@
 #include <map>
 #include <sstream>
 #include <string>
-#include <sys/stat.h>
 #include <thread>
-#include <unistd.h>
+#include <unistd.h> // isatty, and _exit in the signal handler (async-signal-safe)
 #include <vector>
 
 #ifndef FEATUREPOINTS_VERSION
@@ -616,16 +616,11 @@ private:
 // ---------------------------------------------------------------------------------------------
 // Screenshot
 
-// Temporary picture file of the run, removed on failure and on SIGINT/SIGTERM.
-char PictureTemporary[4096] = { 0 };
-
+// Removes the run's temporary files (the output, the curves and the picture being written: see
+// vtkPointCloudIO::CreateTemporaryFile), on failure and on the signals that end the program.
 void RemoveTemporaries(int signal)
 {
   vtkPointCloudIO::RemoveTemporaryFileInProgress();
-  if (PictureTemporary[0])
-  {
-    ::unlink(PictureTemporary);
-  }
   if (signal)
   {
     ::_exit(128 + signal);
@@ -832,183 +827,200 @@ bool ParseNumber(const std::string& text, double& value)
     std::isfinite(value);
 }
 
-Settings ParseArguments(int argc, char* argv[])
+// The command line as it is read: the arguments, the position, and the option at that position
+// ("--name" or "--name=value").
+struct CommandLine
 {
-  Settings s;
-  std::vector<std::string> positional;
-  std::vector<std::pair<std::string, std::string>> given; // option, value (for later checks)
-  for (int i = 1; i < argc; ++i)
+  int Argc;
+  char** Argv;
+  int Index = 1;
+  std::string Name, Value;
+  bool HasValue = false;
+
+  // The option's value: what follows '=', else the next argument.
+  std::string TakeValue()
   {
-    std::string arg = argv[i];
-    if (arg == "--")
+    if (!this->HasValue)
     {
-      for (++i; i < argc; ++i)
+      if (this->Index + 1 >= this->Argc)
       {
-        positional.emplace_back(argv[i]);
+        Fail(ExitUsage, "option --" + this->Name + " needs a value");
       }
-      break;
+      this->Value = this->Argv[++this->Index];
     }
-    if (arg.size() < 2 || arg.compare(0, 2, "--") != 0)
+    return this->Value;
+  }
+
+  // Refuses "--name=value" for an option that takes none.
+  void NoValue() const
+  {
+    if (this->HasValue)
     {
-      if (arg.size() > 1 && arg[0] == '-' && arg != "-h")
-      {
-        Fail(ExitUsage, "unknown option '" + arg + "'");
-      }
-      if (arg == "-h")
-      {
-        PrintHelp();
-        std::exit(ExitSuccess);
-      }
-      positional.push_back(arg);
-      continue;
-    }
-    std::string name = arg.substr(2), value;
-    bool hasValue = false;
-    const size_t equals = name.find('=');
-    if (equals != std::string::npos)
-    {
-      value = name.substr(equals + 1);
-      name.erase(equals);
-      hasValue = true;
-    }
-    auto takeValue = [&]() {
-      if (!hasValue)
-      {
-        if (i + 1 >= argc)
-        {
-          Fail(ExitUsage, "option --" + name + " needs a value");
-        }
-        value = argv[++i];
-      }
-      return value;
-    };
-    auto noValue = [&]() {
-      if (hasValue)
-      {
-        Fail(ExitUsage, "option --" + name + " takes no value");
-      }
-    };
-    if (name == "help")
-    {
-      PrintHelp();
-      std::exit(ExitSuccess);
-    }
-    else if (name == "version")
-    {
-      std::printf("featurepoints %s (VTK %s)\n", FEATUREPOINTS_VERSION,
-        vtkVersion::GetVTKVersion());
-      std::exit(ExitSuccess);
-    }
-    else if (name == "quiet")
-    {
-      noValue();
-      Quiet = true;
-    }
-    else if (name == "features-only")
-    {
-      noValue();
-      s.FeaturesOnly = true;
-    }
-    else if (name == "method")
-    {
-      s.MethodName = takeValue();
-      if (!FindMethod(s.MethodName))
-      {
-        std::string names;
-        for (const Method& m : Methods())
-        {
-          names += (names.empty() ? "" : ", ") + std::string(m.Name);
-        }
-        Fail(ExitUsage, "unknown method '" + s.MethodName + "' (methods: " + names + ")");
-      }
-    }
-    else if (name == "screenshot")
-    {
-      s.Screenshot = takeValue();
-      if (vtkPointCloudIO::GetExtension(s.Screenshot) != "png")
-      {
-        Fail(ExitUsage, "--screenshot writes a PNG file: '" + s.Screenshot +
-            "' does not end in .png");
-      }
-    }
-    else if (name == "lines")
-    {
-      s.Lines = takeValue();
-      if (!featurepoints::CanWriteLines(vtkPointCloudIO::GetExtension(s.Lines)))
-      {
-        Fail(ExitUsage, "--lines writes " + featurepoints::GetLinesExtensions() + ": '" + s.Lines +
-            "' ends in none of them");
-      }
-    }
-    else if (name == "size")
-    {
-      const std::string v = takeValue();
-      int w = 0, h = 0;
-      char extra = 0;
-      if (std::sscanf(v.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 16 || h < 16 ||
-        w > 8192 || h > 8192)
-      {
-        Fail(ExitUsage, "--size takes WIDTHxHEIGHT in pixels, each from 16 to 8192; got '" + v + "'");
-      }
-      // An offscreen picture takes about 64 bytes per pixel in all (colour, depth and copies):
-      // 8192x8192 would take over 4 GB and most of a minute.
-      if (static_cast<long long>(w) * h > MaxPicturePixels)
-      {
-        Fail(ExitUsage, "--size " + v + " is " + FormatNumber(std::round(w * (h / 1e5)) / 10) +
-            " megapixels, about " + FormatNumber(std::ceil(64.0 * w * h / 1e8) / 10) +
-            " GB to render: at most " + FormatNumber(std::round(MaxPicturePixels / 1e5) / 10) +
-            " megapixels (e.g. 4096x4096)");
-      }
-      s.Width = w;
-      s.Height = h;
-    }
-    else if (name == "threads")
-    {
-      const std::string v = takeValue();
-      double n = 0;
-      if (!ParseNumber(v, n) || n < 1 || n > 4096 || n != std::floor(n))
-      {
-        Fail(ExitUsage, "--threads takes a whole number from 1 to 4096; got '" + v + "'");
-      }
-      s.Threads = static_cast<int>(n);
-    }
-    else if (const FilterOption* o = FindFilterOption(name))
-    {
-      if (o->Flag)
-      {
-        noValue();
-        s.FilterValues.emplace_back(o, 1.0);
-        continue;
-      }
-      const std::string v = takeValue();
-      double number = 0.0;
-      if (!o->Keywords.empty())
-      {
-        const auto k = o->Keywords.find(v);
-        if (k == o->Keywords.end())
-        {
-          Fail(ExitUsage, "--" + name + " takes " + o->Metavar + "; got '" + v + "'");
-        }
-        number = k->second;
-      }
-      else if (!ParseNumber(v, number))
-      {
-        Fail(ExitUsage, "--" + name + " takes a number; got '" + v + "'");
-      }
-      else if ((number < o->Min && o->Min > -1e299) || (number > o->Max && o->Max < 1e299) ||
-        (o->Integer && number != std::floor(number)))
-      {
-        Fail(ExitUsage, "--" + name + " " + v + " is out of range: " +
-            (o->Integer ? "a whole number" : "a number") + " from " + FormatNumber(o->Min) +
-            " to " + (o->Max > 1e299 ? std::string("any") : FormatNumber(o->Max)));
-      }
-      s.FilterValues.emplace_back(o, number);
-    }
-    else
-    {
-      Fail(ExitUsage, "unknown option '--" + name + "'");
+      Fail(ExitUsage, "option --" + this->Name + " takes no value");
     }
   }
+};
+
+void PrintVersion()
+{
+  std::printf("featurepoints %s (VTK %s)\n", FEATUREPOINTS_VERSION, vtkVersion::GetVTKVersion());
+}
+
+std::string MethodNames()
+{
+  std::string names;
+  for (const Method& m : Methods())
+  {
+    names += (names.empty() ? "" : ", ") + std::string(m.Name);
+  }
+  return names;
+}
+
+// --size WxH: a picture size within the limits (an offscreen picture takes about 64 bytes per
+// pixel in all, colour, depth and copies: 8192x8192 would take over 4 GB and most of a minute).
+void ReadPictureSize(const std::string& v, Settings& s)
+{
+  int w = 0, h = 0;
+  char extra = 0;
+  if (std::sscanf(v.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 16 || h < 16 || w > 8192 ||
+    h > 8192)
+  {
+    Fail(ExitUsage, "--size takes WIDTHxHEIGHT in pixels, each from 16 to 8192; got '" + v + "'");
+  }
+  if (static_cast<long long>(w) * h > MaxPicturePixels)
+  {
+    Fail(ExitUsage, "--size " + v + " is " + FormatNumber(std::round(w * (h / 1e5)) / 10) +
+        " megapixels, about " + FormatNumber(std::ceil(64.0 * w * h / 1e8) / 10) +
+        " GB to render: at most " + FormatNumber(std::round(MaxPicturePixels / 1e5) / 10) +
+        " megapixels (e.g. 4096x4096)");
+  }
+  s.Width = w;
+  s.Height = h;
+}
+
+// The options that are not the methods': each reads what it needs from the command line into
+// the settings (or prints and exits).
+struct GeneralOption
+{
+  const char* Name;
+  std::function<void(CommandLine&, Settings&)> Read;
+};
+
+const std::vector<GeneralOption>& GeneralOptions()
+{
+  static const std::vector<GeneralOption> options = {
+    { "help",
+      [](CommandLine&, Settings&) {
+        PrintHelp();
+        std::exit(ExitSuccess);
+      } },
+    { "version",
+      [](CommandLine&, Settings&) {
+        PrintVersion();
+        std::exit(ExitSuccess);
+      } },
+    { "quiet",
+      [](CommandLine& line, Settings&) {
+        line.NoValue();
+        Quiet = true;
+      } },
+    { "features-only",
+      [](CommandLine& line, Settings& s) {
+        line.NoValue();
+        s.FeaturesOnly = true;
+      } },
+    { "method",
+      [](CommandLine& line, Settings& s) {
+        s.MethodName = line.TakeValue();
+        if (!FindMethod(s.MethodName))
+        {
+          Fail(ExitUsage, "unknown method '" + s.MethodName + "' (methods: " + MethodNames() + ")");
+        }
+      } },
+    { "screenshot",
+      [](CommandLine& line, Settings& s) {
+        s.Screenshot = line.TakeValue();
+        if (vtkPointCloudIO::GetExtension(s.Screenshot) != "png")
+        {
+          Fail(ExitUsage,
+            "--screenshot writes a PNG file: '" + s.Screenshot + "' does not end in .png");
+        }
+      } },
+    { "lines",
+      [](CommandLine& line, Settings& s) {
+        s.Lines = line.TakeValue();
+        if (!featurepoints::CanWriteLines(vtkPointCloudIO::GetExtension(s.Lines)))
+        {
+          Fail(ExitUsage, "--lines writes " + featurepoints::GetLinesExtensions() + ": '" +
+              s.Lines + "' ends in none of them");
+        }
+      } },
+    { "size", [](CommandLine& line, Settings& s) { ReadPictureSize(line.TakeValue(), s); } },
+    { "threads",
+      [](CommandLine& line, Settings& s) {
+        const std::string v = line.TakeValue();
+        double n = 0;
+        if (!ParseNumber(v, n) || n < 1 || n > 4096 || n != std::floor(n))
+        {
+          Fail(ExitUsage, "--threads takes a whole number from 1 to 4096; got '" + v + "'");
+        }
+        s.Threads = static_cast<int>(n);
+      } },
+  };
+  return options;
+}
+
+const GeneralOption* FindGeneralOption(const std::string& name)
+{
+  for (const GeneralOption& o : GeneralOptions())
+  {
+    if (name == o.Name)
+    {
+      return &o;
+    }
+  }
+  return nullptr;
+}
+
+// A method option's value: a flag, a keyword, or a number within the option's range.
+void ReadFilterOption(const FilterOption& o, CommandLine& line, Settings& s)
+{
+  if (o.Flag)
+  {
+    line.NoValue();
+    s.FilterValues.emplace_back(&o, 1.0);
+    return;
+  }
+  const std::string& name = line.Name;
+  const std::string v = line.TakeValue();
+  double number = 0.0;
+  if (!o.Keywords.empty())
+  {
+    const auto k = o.Keywords.find(v);
+    if (k == o.Keywords.end())
+    {
+      Fail(ExitUsage, "--" + name + " takes " + o.Metavar + "; got '" + v + "'");
+    }
+    number = k->second;
+  }
+  else if (!ParseNumber(v, number))
+  {
+    Fail(ExitUsage, "--" + name + " takes a number; got '" + v + "'");
+  }
+  else if ((number < o.Min && o.Min > -1e299) || (number > o.Max && o.Max < 1e299) ||
+    (o.Integer && number != std::floor(number)))
+  {
+    Fail(ExitUsage, "--" + name + " " + v + " is out of range: " +
+        (o.Integer ? "a whole number" : "a number") + " from " + FormatNumber(o.Min) + " to " +
+        (o.Max > 1e299 ? std::string("any") : FormatNumber(o.Max)));
+  }
+  s.FilterValues.emplace_back(&o, number);
+}
+
+// What the options decide together: the two files, one threshold rule, and options that apply
+// to the method chosen.
+void CheckSettings(Settings& s, const std::vector<std::string>& positional)
+{
   if (positional.size() != 2)
   {
     Fail(ExitUsage, positional.size() < 2 ? "INPUT and OUTPUT files are needed"
@@ -1019,7 +1031,9 @@ Settings ParseArguments(int argc, char* argv[])
   // --threshold-sigmas asks for the automatic rule, --threshold for an absolute one.
   const auto isGiven = [&](const char* option) {
     return std::any_of(s.FilterValues.begin(), s.FilterValues.end(),
-      [&](const std::pair<const FilterOption*, double>& v) { return v.first->Name == std::string(option); });
+      [&](const std::pair<const FilterOption*, double>& v) {
+        return v.first->Name == std::string(option);
+      });
   };
   if (isGiven("threshold") && isGiven("threshold-sigmas"))
   {
@@ -1036,6 +1050,62 @@ Settings ParseArguments(int argc, char* argv[])
           " does not apply to --method " + s.MethodName);
     }
   }
+}
+
+// A hand parser rather than vtksys::CommandLineArguments: that one reports an unknown option
+// only after the whole line is parsed (or stops parsing at the first one), has no "--" that ends
+// the options, and prints its own messages, where this program names the first bad argument in
+// one line of its own.
+Settings ParseArguments(int argc, char* argv[])
+{
+  Settings s;
+  std::vector<std::string> positional;
+  CommandLine line{ argc, argv };
+  for (; line.Index < argc; ++line.Index)
+  {
+    const std::string arg = argv[line.Index];
+    if (arg == "--")
+    {
+      positional.insert(positional.end(), argv + line.Index + 1, argv + argc);
+      break;
+    }
+    if (arg == "-h")
+    {
+      PrintHelp();
+      std::exit(ExitSuccess);
+    }
+    if (arg.size() < 2 || arg.compare(0, 2, "--") != 0)
+    {
+      if (arg.size() > 1 && arg[0] == '-')
+      {
+        Fail(ExitUsage, "unknown option '" + arg + "'");
+      }
+      positional.push_back(arg);
+      continue;
+    }
+    line.Name = arg.substr(2);
+    line.Value.clear();
+    const size_t equals = line.Name.find('=');
+    line.HasValue = equals != std::string::npos;
+    if (line.HasValue)
+    {
+      line.Value = line.Name.substr(equals + 1);
+      line.Name.erase(equals);
+    }
+    if (const GeneralOption* o = FindGeneralOption(line.Name))
+    {
+      o->Read(line, s);
+    }
+    else if (const FilterOption* f = FindFilterOption(line.Name))
+    {
+      ReadFilterOption(*f, line, s);
+    }
+    else
+    {
+      Fail(ExitUsage, "unknown option '--" + line.Name + "'");
+    }
+  }
+  CheckSettings(s, positional);
   return s;
 }
 
@@ -1204,15 +1274,419 @@ std::string FindNonFinite(vtkPolyData* result, vtkPointSet* cloud)
   return "";
 }
 
+// Whether two names are the same file (links and other paths to it included).
 bool SameFile(const std::string& a, const std::string& b)
 {
-  struct stat sa, sb;
-  return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
-    sa.st_ino == sb.st_ino;
+  return a == b || vtksys::SystemTools::SameFile(a, b);
 }
-} // namespace
 
-int Run(const Settings& s);
+// The filter's first error, as one line.
+class ErrorFlag : public vtkCommand
+{
+public:
+  static ErrorFlag* New() { return new ErrorFlag; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    if (this->Message.empty())
+    {
+      this->Message = vtkPointCloudIO::MessageText(static_cast<const char*>(data));
+    }
+  }
+  std::string Message;
+};
+
+// One run of the program once the command line is read: each stage is one member function, and
+// Execute() calls them in order. A stage that fails ends the program with its one-line message.
+class FeaturePointsRun
+{
+public:
+  explicit FeaturePointsRun(const Settings& s)
+    : S(s)
+    , M(FindMethod(s.MethodName))
+  {
+  }
+
+  int Execute()
+  {
+    this->CheckFiles();
+    InstallSignalHandlers();
+    this->SetThreads();
+    this->ReadCloud();
+    this->Extract();
+    this->ExtractCurves();
+    this->Render();
+    this->WriteFiles();
+    if (!Quiet)
+    {
+      this->PrintSummary();
+    }
+    return ExitSuccess;
+  }
+
+private:
+  // What the command line alone decides: formats, and files that must not be overwritten; then
+  // what would fail after the work: unwritable targets, no display to render with.
+  void CheckFiles() const
+  {
+    const Settings& s = this->S;
+    const std::string inExt = vtkPointCloudIO::GetExtension(s.Input);
+    const std::string outExt = vtkPointCloudIO::GetExtension(s.Output);
+    if (!vtkPointCloudIO::CanRead(inExt))
+    {
+      Fail(ExitUsage, s.Input + ": cannot tell the input format from the extension " +
+          (inExt.empty() ? std::string("(none)") : "'." + inExt + "'") +
+          "; readable: " + vtkPointCloudIO::GetReadableExtensions());
+    }
+    if (!vtkPointCloudIO::CanWrite(outExt))
+    {
+      Fail(ExitUsage, s.Output + ": cannot tell the output format from the extension " +
+          (outExt.empty() ? std::string("(none)") : "'." + outExt + "'") +
+          "; writable: " + vtkPointCloudIO::GetWritableExtensions());
+    }
+    if (SameFile(s.Input, s.Output))
+    {
+      Fail(ExitUsage, s.Output + ": is the input file; the input is never overwritten");
+    }
+    if (!s.Screenshot.empty() &&
+      (SameFile(s.Screenshot, s.Input) || SameFile(s.Screenshot, s.Output)))
+    {
+      Fail(ExitUsage, s.Screenshot + ": the picture cannot replace the input or the output");
+    }
+    if (!s.Lines.empty() &&
+      (SameFile(s.Lines, s.Input) || SameFile(s.Lines, s.Output) || s.Lines == s.Screenshot))
+    {
+      Fail(ExitUsage, s.Lines + ": the curves cannot replace the input, the output or the picture");
+    }
+    std::string error;
+    if (!vtkPointCloudIO::CanCreate(s.Output, error) ||
+      (!s.Screenshot.empty() && !vtkPointCloudIO::CanCreate(s.Screenshot, error)) ||
+      (!s.Lines.empty() && !vtkPointCloudIO::CanCreate(s.Lines, error)))
+    {
+      Fail(ExitFailure, error);
+    }
+    if (!s.Screenshot.empty() && NeedsMissingDisplay())
+    {
+      Fail(ExitFailure, s.Screenshot + ": cannot render: this VTK renders through X and no "
+                                       "display is set (run under xvfb-run -a)");
+    }
+  }
+
+  // Any signal that ends the program removes the temporary files first (SIGPIPE: a closed
+  // terminal or pipe on stderr; SIGXCPU: the shell's CPU time limit). Past the shell's file size
+  // limit a write fails (rather than a signal ending the program), and the writer says so.
+  static void InstallSignalHandlers()
+  {
+    for (int signal :
+      { SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGXCPU, SIGALRM, SIGUSR1, SIGUSR2 })
+    {
+      std::signal(signal, RemoveTemporaries);
+    }
+    std::signal(SIGXFSZ, SIG_IGN);
+  }
+
+  // More threads than cores only slows the run down (and TBB says so on the console).
+  void SetThreads() const
+  {
+    if (this->S.Threads <= 0)
+    {
+      return;
+    }
+    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    if (this->S.Threads > cores && !Quiet)
+    {
+      std::fprintf(stderr,
+        "featurepoints: warning: --threads %d: this machine has %d core(s); using %d\n",
+        this->S.Threads, cores, cores);
+    }
+    vtkSMPTools::Initialize(std::min(this->S.Threads, cores));
+  }
+
+  // The input cloud, which must hold points, all of them finite.
+  void ReadCloud()
+  {
+    const Settings& s = this->S;
+    this->Meter->Stage("reading");
+    const auto start = Clock::now();
+    std::string error;
+    this->Cloud = vtkPointCloudIO::Read(s.Input, error, this->Meter);
+    this->Meter->Finish();
+    if (!this->Cloud)
+    {
+      Fail(ExitFailure, error);
+    }
+    this->Times.emplace_back("read", Seconds(start));
+    const vtkIdType n = this->Cloud->GetNumberOfPoints();
+    if (n == 0)
+    {
+      Fail(ExitFailure, s.Input + ": the file holds no point");
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      this->Cloud->GetPoint(i, x);
+      if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      {
+        std::ostringstream m;
+        m << s.Input << ": point " << i << " (counting from 0) has a non-finite coordinate ("
+          << x[0] << ", " << x[1] << ", " << x[2] << ")";
+        Fail(ExitFailure, m.str());
+      }
+    }
+  }
+
+  // The method with the options given, on the cloud (in a scaled frame when its extent would
+  // overflow or underflow squared distances), its result in the input's units.
+  void Extract()
+  {
+    const Settings& s = this->S;
+    this->Filter = this->M->Create();
+    for (const auto& value : s.FilterValues)
+    {
+      value.first->Apply(this->Filter, value.second);
+    }
+    this->Filter->SetOutputFeaturesOnly(false); // the picture needs every point; see WriteFiles
+    const int exponent = ScaledFrameExponent(this->Cloud);
+    if (exponent != 0)
+    {
+      LengthUnit = std::ldexp(1.0, -exponent);
+      if (!Quiet)
+      {
+        double bounds[6];
+        this->Cloud->GetPoints()->GetBounds(bounds);
+        std::fprintf(stderr,
+          "featurepoints: note: %s: the cloud spans %.3g units: the method runs on its "
+          "coordinates scaled by 2^%d, where squares of distances neither overflow nor underflow "
+          "(results in the input's units)\n",
+          s.Input.c_str(),
+          std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] }),
+          exponent);
+      }
+      this->Filter->SetInputData(ScaledFrame(this->Cloud, exponent));
+    }
+    else
+    {
+      this->Filter->SetInputData(this->Cloud);
+    }
+    this->Filter->AddObserver(vtkCommand::ProgressEvent, this->Meter);
+    vtkNew<ErrorFlag> filterError;
+    this->Filter->AddObserver(vtkCommand::ErrorEvent, filterError);
+    this->Meter->Stage("extracting");
+    const auto start = Clock::now();
+    this->Filter->Update();
+    this->Meter->Finish();
+    this->Times.emplace_back("extract", Seconds(start));
+    if (!filterError->Message.empty())
+    {
+      Fail(ExitFailure, s.Input + ": " + filterError->Message);
+    }
+    this->Result = this->Filter->GetOutput();
+    if (exponent != 0)
+    {
+      UnscaleResult(this->Result, this->Cloud, *this->M, exponent, s.Input);
+    }
+    const std::string nonFinite = FindNonFinite(this->Result, this->Cloud);
+    if (!nonFinite.empty())
+    {
+      Fail(ExitFailure, s.Input + ": " + nonFinite);
+    }
+    WarnReplacedArrays(this->Cloud, this->Result);
+    this->Grown = this->M->GrowThreshold ? this->M->GrowThreshold(this->Filter) : std::nan("");
+  }
+
+  // --lines: the feature curves; the output gets CurveId.
+  void ExtractCurves()
+  {
+    if (this->S.Lines.empty())
+    {
+      return;
+    }
+    this->Meter->Stage("curves");
+    const auto start = Clock::now();
+    this->Curves->SetInputData(this->Result);
+    this->Curves->Update();
+    this->Meter->Finish();
+    this->Times.emplace_back("curves", Seconds(start));
+    this->Result = this->Curves->GetOutput();
+  }
+
+  // --screenshot: the picture, into a temporary file that WriteFiles renames once the output is
+  // written too.
+  void Render()
+  {
+    const Settings& s = this->S;
+    if (s.Screenshot.empty())
+    {
+      return;
+    }
+    this->Meter->Stage("rendering");
+    const auto start = Clock::now();
+    std::string error;
+    this->PictureFile = vtkPointCloudIO::CreateTemporaryFile(s.Screenshot, error, true);
+    if (this->PictureFile.empty())
+    {
+      Fail(ExitFailure, error);
+    }
+    std::ostringstream caption;
+    caption << this->M->Name << ": " << this->Filter->GetNumberOfFeaturePoints()
+            << " feature points (red) of " << this->Cloud->GetNumberOfPoints() << ", "
+            << this->Filter->GetScoreArrayName() << " > " << std::setprecision(4)
+            << this->Filter->GetThresholdUsed();
+    if (!std::isnan(this->Grown))
+    {
+      caption << ", grown through > " << this->Grown;
+    }
+    if (!s.Lines.empty())
+    {
+      caption << "; " << this->Curves->GetNumberOfCurves() << " curves (black)";
+    }
+    if (!RenderPicture(this->Result, this->Filter->GetScoreArrayName(),
+          this->Filter->GetThresholdUsed(), caption.str(), s.Width, s.Height,
+          this->PictureFile, error, s.Lines.empty() ? nullptr : this->Curves->GetCurves()))
+    {
+      RemoveTemporaries(0);
+      Fail(ExitFailure, s.Screenshot + ": " + error);
+    }
+    this->Times.emplace_back("render", Seconds(start));
+  }
+
+  // The output (only the feature points if asked, with their ids in the input), the curves, and
+  // the picture renamed into place: a failure leaves none of them behind.
+  void WriteFiles()
+  {
+    const Settings& s = this->S;
+    vtkSmartPointer<vtkPolyData> written = this->Result;
+    if (s.FeaturesOnly)
+    {
+      written = vtkSmartPointer<vtkPolyData>::New();
+      vtkFeaturePointDetector::SelectFeaturePoints(this->Result,
+        vtkUnsignedCharArray::SafeDownCast(this->Result->GetPointData()->GetArray("FeatureMask")),
+        written);
+    }
+    this->Meter->Stage("writing");
+    const auto start = Clock::now();
+    std::string error;
+    if (!vtkPointCloudIO::Write(written, s.Output, error, "", this->Meter))
+    {
+      this->Meter->Finish();
+      RemoveTemporaries(0);
+      Fail(ExitFailure, error);
+    }
+    if (!s.Lines.empty() && !featurepoints::WriteLines(this->Curves->GetCurves(), s.Lines, error))
+    {
+      this->Meter->Finish();
+      RemoveTemporaries(0);
+      std::remove(s.Output.c_str()); // a failed run leaves no output behind
+      Fail(ExitFailure, error);
+    }
+    this->Meter->Finish();
+    this->Times.emplace_back("write", Seconds(start));
+    if (!this->PictureFile.empty() &&
+      std::rename(this->PictureFile.c_str(), s.Screenshot.c_str()) != 0)
+    {
+      RemoveTemporaries(0);
+      Fail(ExitFailure, s.Screenshot + ": cannot write: " + std::strerror(errno));
+    }
+    vtkPointCloudIO::ReleaseTemporaryFile(this->PictureFile);
+  }
+
+  // The counts of each FeatureType, when the method writes them ("" otherwise).
+  std::string TypeCounts() const
+  {
+    auto* types = this->M->FeatureTypes
+      ? vtkUnsignedCharArray::SafeDownCast(this->Result->GetPointData()->GetArray("FeatureType"))
+      : nullptr;
+    if (!types)
+    {
+      return "";
+    }
+    long long counts[5] = { 0, 0, 0, 0, 0 };
+    for (vtkIdType i = 0; i < types->GetNumberOfTuples(); ++i)
+    {
+      const unsigned char t = types->GetValue(i);
+      if (t < 5)
+      {
+        ++counts[t];
+      }
+    }
+    char line[160];
+    std::snprintf(line, sizeof(line), "convex %lld, concave %lld, corner %lld, border %lld",
+      counts[vtkCreaseVotingFeatures::CONVEX], counts[vtkCreaseVotingFeatures::CONCAVE],
+      counts[vtkCreaseVotingFeatures::CORNER], counts[vtkCreaseVotingFeatures::BORDER]);
+    return line;
+  }
+
+  void PrintSummary() const
+  {
+    const Settings& s = this->S;
+    vtkFeaturePointDetector* filter = this->Filter;
+    const vtkIdType n = this->Cloud->GetNumberOfPoints();
+    const vtkIdType features = filter->GetNumberOfFeaturePoints();
+    std::printf("input       %s: %lld points\n", s.Input.c_str(), static_cast<long long>(n));
+    std::printf("method      %s, mean spacing %.6g%s\n", this->M->Name,
+      filter->GetMeanSpacing() * LengthUnit,
+      this->M->Details ? this->M->Details(filter).c_str() : "");
+    std::printf("threshold   %s > %.6g (%s)%s\n", filter->GetScoreArrayName(),
+      filter->GetThresholdUsed(),
+      filter->GetThresholdMode() == vtkFeaturePointDetector::AUTOMATIC
+        ? (FormatNumber(filter->GetThresholdSigmas()) + " robust standard deviations above the "
+                                                        "median")
+            .c_str()
+        : "absolute",
+      std::isnan(this->Grown) ? ""
+                              : (", then grown along the features through " +
+                                  std::string(filter->GetScoreArrayName()) + " > " +
+                                  FormatNumber(this->Grown))
+                                  .c_str());
+    std::printf("candidates  %lld of %lld points scored\n",
+      static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n));
+    std::printf("features    %lld (%.2f %%)\n", static_cast<long long>(features),
+      100.0 * features / std::max<vtkIdType>(n, 1));
+    const std::string types = this->TypeCounts();
+    if (!types.empty())
+    {
+      std::printf("types       %s\n", types.c_str());
+    }
+    std::printf(
+      "output      %s%s\n", s.Output.c_str(), s.FeaturesOnly ? " (feature points only)" : "");
+    if (!s.Lines.empty())
+    {
+      std::printf("curves      %lld, total length %.6g (%s)\n",
+        static_cast<long long>(this->Curves->GetNumberOfCurves()), this->Curves->GetTotalLength(),
+        s.Lines.c_str());
+    }
+    if (!s.Screenshot.empty())
+    {
+      std::printf("picture     %s (%dx%d)\n", s.Screenshot.c_str(), s.Width, s.Height);
+    }
+    std::printf("time (s)    ");
+    for (size_t i = 0; i < this->Times.size(); ++i)
+    {
+      std::printf("%s%s %.3f", i ? ", " : "", this->Times[i].first.c_str(), this->Times[i].second);
+    }
+    std::printf("; total %.3f\n", Seconds(this->Meter->RunStart));
+    std::string stages;
+    for (int i = 0; i < filter->GetNumberOfStages(); ++i)
+    {
+      char line[96];
+      std::snprintf(line, sizeof(line), "%s%s %.3f", i ? ", " : "", filter->GetStageName(i),
+        filter->GetStageTime(i));
+      stages += line;
+    }
+    std::printf("extract (s) %s\n", stages.c_str());
+  }
+
+  const Settings& S;
+  const Method* M;
+  vtkNew<Progress> Meter; // progress on the terminal
+  std::vector<std::pair<std::string, double>> Times;
+  vtkSmartPointer<vtkPointSet> Cloud;
+  vtkSmartPointer<vtkFeaturePointDetector> Filter;
+  vtkPolyData* Result = nullptr;
+  double Grown = std::nan(""); // see Method::GrowThreshold
+  vtkNew<vtkFeatureCurveExtraction> Curves;
+  std::string PictureFile;
+};
+} // namespace
 
 int main(int argc, char* argv[])
 {
@@ -1224,7 +1698,8 @@ int main(int argc, char* argv[])
   const Settings s = ParseArguments(argc, argv);
   try
   {
-    return Run(s);
+    FeaturePointsRun run(s);
+    return run.Execute();
   }
   catch (const std::bad_alloc&)
   {
@@ -1236,327 +1711,4 @@ int main(int argc, char* argv[])
     RemoveTemporaries(0);
     Fail(ExitFailure, s.Input + ": unexpected failure (" + e.what() + ")");
   }
-}
-
-int Run(const Settings& s)
-{
-
-  // What the command line alone decides: formats, and files that must not be overwritten.
-  const std::string inExt = vtkPointCloudIO::GetExtension(s.Input);
-  const std::string outExt = vtkPointCloudIO::GetExtension(s.Output);
-  if (!vtkPointCloudIO::CanRead(inExt))
-  {
-    Fail(ExitUsage, s.Input + ": cannot tell the input format from the extension " +
-        (inExt.empty() ? std::string("(none)") : "'." + inExt + "'") +
-        "; readable: " + vtkPointCloudIO::GetReadableExtensions());
-  }
-  if (!vtkPointCloudIO::CanWrite(outExt))
-  {
-    Fail(ExitUsage, s.Output + ": cannot tell the output format from the extension " +
-        (outExt.empty() ? std::string("(none)") : "'." + outExt + "'") +
-        "; writable: " + vtkPointCloudIO::GetWritableExtensions());
-  }
-  if (SameFile(s.Input, s.Output) || s.Input == s.Output)
-  {
-    Fail(ExitUsage, s.Output + ": is the input file; the input is never overwritten");
-  }
-  if (!s.Screenshot.empty() &&
-    (SameFile(s.Screenshot, s.Input) || SameFile(s.Screenshot, s.Output) ||
-      s.Screenshot == s.Input || s.Screenshot == s.Output))
-  {
-    Fail(ExitUsage, s.Screenshot + ": the picture cannot replace the input or the output");
-  }
-  if (!s.Lines.empty() &&
-    (SameFile(s.Lines, s.Input) || SameFile(s.Lines, s.Output) || s.Lines == s.Input ||
-      s.Lines == s.Output || s.Lines == s.Screenshot))
-  {
-    Fail(ExitUsage, s.Lines + ": the curves cannot replace the input, the output or the picture");
-  }
-  // Fail before the work, not after it: unwritable targets, no display to render with.
-  std::string error;
-  if (!vtkPointCloudIO::CanCreate(s.Output, error) ||
-    (!s.Screenshot.empty() && !vtkPointCloudIO::CanCreate(s.Screenshot, error)) ||
-    (!s.Lines.empty() && !vtkPointCloudIO::CanCreate(s.Lines, error)))
-  {
-    Fail(ExitFailure, error);
-  }
-  if (!s.Screenshot.empty() && NeedsMissingDisplay())
-  {
-    Fail(ExitFailure, s.Screenshot + ": cannot render: this VTK renders through X and no "
-                                     "display is set (run under xvfb-run -a)");
-  }
-  // Any signal that ends the program removes the temporary files first (SIGPIPE: a closed
-  // terminal or pipe on stderr; SIGXCPU: the shell's CPU time limit). Past the shell's file size
-  // limit a write fails (rather than a signal ending the program), and the writer says so.
-  for (int signal : { SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGXCPU, SIGALRM, SIGUSR1,
-         SIGUSR2 })
-  {
-    std::signal(signal, RemoveTemporaries);
-  }
-  std::signal(SIGXFSZ, SIG_IGN);
-  if (s.Threads > 0)
-  {
-    // More threads than cores only slows the run down (and TBB says so on the console).
-    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    if (s.Threads > cores && !Quiet)
-    {
-      std::fprintf(stderr, "featurepoints: warning: --threads %d: this machine has %d core(s); "
-                           "using %d\n",
-        s.Threads, cores, cores);
-    }
-    vtkSMPTools::Initialize(std::min(s.Threads, cores));
-  }
-
-  vtkNew<Progress> progress;
-  const auto runStart = Clock::now();
-  std::vector<std::pair<std::string, double>> times;
-
-  // Read.
-  progress->Stage("reading");
-  auto start = Clock::now();
-  vtkSmartPointer<vtkPointSet> cloud = vtkPointCloudIO::Read(s.Input, error, progress);
-  progress->Finish();
-  if (!cloud)
-  {
-    Fail(ExitFailure, error);
-  }
-  times.emplace_back("read", Seconds(start));
-  const vtkIdType n = cloud->GetNumberOfPoints();
-  if (n == 0)
-  {
-    Fail(ExitFailure, s.Input + ": the file holds no point");
-  }
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double x[3];
-    cloud->GetPoint(i, x);
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-    {
-      std::ostringstream m;
-      m << s.Input << ": point " << i << " (counting from 0) has a non-finite coordinate (" << x[0]
-        << ", " << x[1] << ", " << x[2] << ")";
-      Fail(ExitFailure, m.str());
-    }
-  }
-
-  // Extract.
-  const Method* method = FindMethod(s.MethodName);
-  vtkSmartPointer<vtkFeaturePointDetector> filter = method->Create();
-  for (const auto& value : s.FilterValues)
-  {
-    value.first->Apply(filter, value.second);
-  }
-  filter->SetOutputFeaturesOnly(false); // the picture needs every point; --features-only below
-  const int exponent = ScaledFrameExponent(cloud);
-  if (exponent != 0)
-  {
-    LengthUnit = std::ldexp(1.0, -exponent);
-    if (!Quiet)
-    {
-      double bounds[6];
-      cloud->GetPoints()->GetBounds(bounds);
-      std::fprintf(stderr,
-        "featurepoints: note: %s: the cloud spans %.3g units: the method runs on its coordinates "
-        "scaled by 2^%d, where squares of distances neither overflow nor underflow (results in "
-        "the input's units)\n",
-        s.Input.c_str(),
-        std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] }),
-        exponent);
-    }
-    filter->SetInputData(ScaledFrame(cloud, exponent));
-  }
-  else
-  {
-    filter->SetInputData(cloud);
-  }
-  filter->AddObserver(vtkCommand::ProgressEvent, progress);
-  struct ErrorFlag : vtkCommand
-  {
-    static ErrorFlag* New() { return new ErrorFlag; }
-    void Execute(vtkObject*, unsigned long, void* data) override
-    {
-      if (this->Message.empty())
-      {
-        this->Message = vtkPointCloudIO::MessageText(static_cast<const char*>(data));
-      }
-    }
-    std::string Message;
-  };
-  vtkNew<ErrorFlag> filterError;
-  filter->AddObserver(vtkCommand::ErrorEvent, filterError);
-  progress->Stage("extracting");
-  start = Clock::now();
-  filter->Update();
-  progress->Finish();
-  times.emplace_back("extract", Seconds(start));
-  if (!filterError->Message.empty())
-  {
-    Fail(ExitFailure, s.Input + ": " + filterError->Message);
-  }
-  vtkPolyData* result = filter->GetOutput();
-  if (exponent != 0)
-  {
-    UnscaleResult(result, cloud, *method, exponent, s.Input);
-  }
-  const std::string nonFinite = FindNonFinite(result, cloud);
-  if (!nonFinite.empty())
-  {
-    Fail(ExitFailure, s.Input + ": " + nonFinite);
-  }
-  WarnReplacedArrays(cloud, result);
-  const double grown = method->GrowThreshold ? method->GrowThreshold(filter) : std::nan("");
-
-  // Curves (--lines): the output gets CurveId.
-  vtkNew<vtkFeatureCurveExtraction> curves;
-  if (!s.Lines.empty())
-  {
-    progress->Stage("curves");
-    start = Clock::now();
-    curves->SetInputData(result);
-    curves->Update();
-    progress->Finish();
-    times.emplace_back("curves", Seconds(start));
-    result = curves->GetOutput();
-  }
-
-  // Picture (into a temporary file: renamed only once the output is written too).
-  std::string pictureTemporary;
-  if (!s.Screenshot.empty())
-  {
-    progress->Stage("rendering");
-    start = Clock::now();
-    // No signal between creating the file and naming it for RemoveTemporaries.
-    sigset_t all, previous;
-    sigfillset(&all);
-    ::sigprocmask(SIG_BLOCK, &all, &previous);
-    pictureTemporary = vtkPointCloudIO::CreateTemporaryFile(s.Screenshot, error);
-    std::snprintf(PictureTemporary, sizeof(PictureTemporary), "%s", pictureTemporary.c_str());
-    ::sigprocmask(SIG_SETMASK, &previous, nullptr);
-    if (pictureTemporary.empty())
-    {
-      Fail(ExitFailure, error);
-    }
-    std::ostringstream caption;
-    caption << method->Name << ": " << filter->GetNumberOfFeaturePoints()
-            << " feature points (red) of " << n << ", " << filter->GetScoreArrayName() << " > "
-            << std::setprecision(4) << filter->GetThresholdUsed();
-    if (!std::isnan(grown))
-    {
-      caption << ", grown through > " << grown;
-    }
-    if (!s.Lines.empty())
-    {
-      caption << "; " << curves->GetNumberOfCurves() << " curves (black)";
-    }
-    if (!RenderPicture(result, filter->GetScoreArrayName(), filter->GetThresholdUsed(),
-          caption.str(), s.Width, s.Height, pictureTemporary, error,
-          s.Lines.empty() ? nullptr : curves->GetCurves()))
-    {
-      RemoveTemporaries(0);
-      Fail(ExitFailure, s.Screenshot + ": " + error);
-    }
-    times.emplace_back("render", Seconds(start));
-  }
-
-  // Write: only the feature points if asked, with their ids in the input.
-  vtkSmartPointer<vtkPolyData> written = result;
-  if (s.FeaturesOnly)
-  {
-    written = vtkSmartPointer<vtkPolyData>::New();
-    vtkFeaturePointDetector::SelectFeaturePoints(result,
-      vtkUnsignedCharArray::SafeDownCast(result->GetPointData()->GetArray("FeatureMask")),
-      written);
-  }
-  progress->Stage("writing");
-  start = Clock::now();
-  if (!vtkPointCloudIO::Write(written, s.Output, error, "", progress))
-  {
-    progress->Finish();
-    RemoveTemporaries(0);
-    Fail(ExitFailure, error);
-  }
-  if (!s.Lines.empty() && !featurepoints::WriteLines(curves->GetCurves(), s.Lines, error))
-  {
-    progress->Finish();
-    RemoveTemporaries(0);
-    std::remove(s.Output.c_str()); // a failed run leaves no output behind
-    Fail(ExitFailure, error);
-  }
-  progress->Finish();
-  times.emplace_back("write", Seconds(start));
-  if (!pictureTemporary.empty() && std::rename(pictureTemporary.c_str(), s.Screenshot.c_str()) != 0)
-  {
-    RemoveTemporaries(0);
-    Fail(ExitFailure, s.Screenshot + ": cannot write: " + std::strerror(errno));
-  }
-  PictureTemporary[0] = '\0';
-
-  if (!Quiet)
-  {
-    const vtkIdType features = filter->GetNumberOfFeaturePoints();
-    std::printf("input       %s: %lld points\n", s.Input.c_str(), static_cast<long long>(n));
-    std::printf("method      %s, mean spacing %.6g%s\n", method->Name,
-      filter->GetMeanSpacing() * LengthUnit,
-      method->Details ? method->Details(filter).c_str() : "");
-    std::printf("threshold   %s > %.6g (%s)%s\n", filter->GetScoreArrayName(),
-      filter->GetThresholdUsed(),
-      filter->GetThresholdMode() == vtkFeaturePointDetector::AUTOMATIC
-        ? (FormatNumber(filter->GetThresholdSigmas()) + " robust standard deviations above the "
-                                                        "median")
-            .c_str()
-        : "absolute",
-      std::isnan(grown) ? ""
-                        : (", then grown along the features through " +
-                            std::string(filter->GetScoreArrayName()) + " > " + FormatNumber(grown))
-                            .c_str());
-    std::printf("candidates  %lld of %lld points scored\n",
-      static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n));
-    std::printf("features    %lld (%.2f %%)\n", static_cast<long long>(features),
-      100.0 * features / std::max<vtkIdType>(n, 1));
-    auto* types = method->FeatureTypes
-      ? vtkUnsignedCharArray::SafeDownCast(result->GetPointData()->GetArray("FeatureType"))
-      : nullptr;
-    if (types)
-    {
-      long long counts[5] = { 0, 0, 0, 0, 0 };
-      for (vtkIdType i = 0; i < types->GetNumberOfTuples(); ++i)
-      {
-        const unsigned char t = types->GetValue(i);
-        if (t < 5)
-        {
-          ++counts[t];
-        }
-      }
-      std::printf("types       convex %lld, concave %lld, corner %lld, border %lld\n",
-        counts[vtkCreaseVotingFeatures::CONVEX], counts[vtkCreaseVotingFeatures::CONCAVE],
-        counts[vtkCreaseVotingFeatures::CORNER], counts[vtkCreaseVotingFeatures::BORDER]);
-    }
-    std::printf("output      %s%s\n", s.Output.c_str(), s.FeaturesOnly ? " (feature points only)" : "");
-    if (!s.Lines.empty())
-    {
-      std::printf("curves      %lld, total length %.6g (%s)\n",
-        static_cast<long long>(curves->GetNumberOfCurves()), curves->GetTotalLength(),
-        s.Lines.c_str());
-    }
-    if (!s.Screenshot.empty())
-    {
-      std::printf("picture     %s (%dx%d)\n", s.Screenshot.c_str(), s.Width, s.Height);
-    }
-    std::string stages;
-    for (int i = 0; i < filter->GetNumberOfStages(); ++i)
-    {
-      char line[96];
-      std::snprintf(line, sizeof(line), "%s%s %.3f", i ? ", " : "", filter->GetStageName(i),
-        filter->GetStageTime(i));
-      stages += line;
-    }
-    std::printf("time (s)    ");
-    for (size_t i = 0; i < times.size(); ++i)
-    {
-      std::printf("%s%s %.3f", i ? ", " : "", times[i].first.c_str(), times[i].second);
-    }
-    std::printf("; total %.3f\n", Seconds(runStart));
-    std::printf("extract (s) %s\n", stages.c_str());
-  }
-  return ExitSuccess;
 }

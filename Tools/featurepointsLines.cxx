@@ -60,7 +60,7 @@ vtkSmartPointer<vtkPolyData> VertexTable(vtkPolyData* curves)
 
 bool WriteObj(vtkPolyData* curves, const std::string& fileName, std::string& error)
 {
-  const std::string temporary = vtkPointCloudIO::CreateTemporaryFile(fileName, error);
+  const std::string temporary = vtkPointCloudIO::CreateTemporaryFile(fileName, error, true);
   if (temporary.empty())
   {
     return false;
@@ -105,6 +105,7 @@ bool WriteObj(vtkPolyData* curves, const std::string& fileName, std::string& err
   {
     std::remove(temporary.c_str());
   }
+  vtkPointCloudIO::ReleaseTemporaryFile(temporary);
   return ok;
 }
 } // namespace

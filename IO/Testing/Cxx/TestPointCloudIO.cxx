@@ -1,6 +1,8 @@
 // vtkPointCloudIO: a cloud written in every format and read back keeps its points and arrays;
 // reading picks the reader by extension; every failure is one line naming the file, and a failed
 // write leaves no file behind (not even its temporary file) and keeps an existing target intact.
+#include "FeaturePointsTestFiles.h"
+
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -27,36 +29,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::printf("FAILED: %s\n", what.c_str());
-    ++Failures;
-  }
-}
-
-bool Exists(const std::string& path)
-{
-  struct stat info;
-  return ::stat(path.c_str(), &info) == 0;
-}
-
-std::set<std::string> Entries(const std::string& folder)
-{
-  std::set<std::string> names;
-  if (DIR* d = ::opendir(folder.c_str()))
-  {
-    while (dirent* e = ::readdir(d))
-    {
-      names.insert(e->d_name);
-    }
-    ::closedir(d);
-  }
-  return names;
-}
+using namespace fptest;
 
 template <typename ArrayT>
 vtkSmartPointer<ArrayT> NewArray(const char* name, int components, vtkIdType n)

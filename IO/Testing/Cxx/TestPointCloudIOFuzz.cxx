@@ -6,6 +6,8 @@
 // case is kept in the test's folder (fuzz-failure-N.EXT) to reproduce it.
 //
 //   FeaturePointsIOCxxTests TestPointCloudIOFuzz FOLDER [CASES_PER_SEED]
+#include "FeaturePointsTestFiles.h"
+
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
 #include "vtkLogger.h"
@@ -42,24 +44,11 @@
 
 namespace
 {
+using namespace fptest;
 // Exit codes of a child that read without crashing but broke the rules.
 constexpr int ChildOk = 0;
 constexpr int ChildBadMessage = 3;
 constexpr int ChildBadCloud = 4;
-
-std::string Slurp(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void Spit(const std::string& path, const std::string& bytes)
-{
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
 
 // A small cloud with normals, colours, an integer and a two-component array.
 vtkSmartPointer<vtkPolyData> SmallCloud()

@@ -1,5 +1,7 @@
 // vtkPointCloudTextReader on hand-written files: headers, delimiters, PTS columns, comments and
 // CRLF line ends; and every malformed file it must reject with the file, line and problem.
+#include "FeaturePointsTestFiles.h"
+
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -16,16 +18,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::printf("FAILED: %s\n", what.c_str());
-    ++Failures;
-  }
-}
+using namespace fptest;
 
 // Keeps the reader's error off the console (the test checks the message itself).
 class Silence : public vtkCommand

@@ -7,6 +7,8 @@
 //
 // Every bad input must give its exit code (1 bad input or failure, 2 bad usage), a one-line
 // message naming the file and the problem, and leave no output file (nor a temporary one).
+#include "FeaturePointsTestFiles.h"
+
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFeaturePointExtraction.h"
@@ -44,45 +46,8 @@ extern char** environ;
 
 namespace
 {
-int Failures = 0;
+using namespace fptest;
 std::string Program, Folder;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::printf("FAILED: %s\n", what.c_str());
-    ++Failures;
-  }
-}
-
-bool Exists(const std::string& path)
-{
-  struct stat info;
-  return ::stat(path.c_str(), &info) == 0;
-}
-
-std::string Slurp(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::set<std::string> Entries()
-{
-  std::set<std::string> names;
-  if (DIR* d = ::opendir(Folder.c_str()))
-  {
-    while (dirent* e = ::readdir(d))
-    {
-      names.insert(e->d_name);
-    }
-    ::closedir(d);
-  }
-  return names;
-}
 
 struct Run
 {
@@ -132,7 +97,7 @@ std::string Path(const std::string& name)
 void ExpectFailure(const std::string& what, const std::vector<std::string>& arguments, int code,
   const std::string& expected, const std::string& output)
 {
-  const std::set<std::string> before = Entries();
+  const std::set<std::string> before = Entries(Folder);
   const Run run = Execute(arguments);
   Check(run.Code == code,
     what + ": exit code " + std::to_string(run.Code) + ", expected " + std::to_string(code));
@@ -142,7 +107,7 @@ void ExpectFailure(const std::string& what, const std::vector<std::string>& argu
   Check(run.Err.find("ERROR: In") == std::string::npos && run.Err.find("vtkExecutive") == std::string::npos,
     what + ": VTK's raw error text leaked: " + run.Err);
   Check(output.empty() || !Exists(output), what + ": output file left behind: " + output);
-  std::set<std::string> after = Entries();
+  std::set<std::string> after = Entries(Folder);
   Check(after == before, what + ": files created by a failed run");
 }
 

@@ -6,6 +6,8 @@
 // legacy VTK files, clouds scaled to 1e-300 and 1e300, signals during the run, a FIFO, VTK's
 // many-line errors, a dropped column, oversized pictures and thread counts. Each case checks its
 // exit code, its one-line message, its time, and that no file is left behind.
+#include "FeaturePointsTestFiles.h"
+
 #include "vtkFeatureModelSource.h"
 #include "vtkNew.h"
 #include "vtkPointCloudIO.h"
@@ -36,49 +38,12 @@
 
 namespace
 {
-int Failures = 0;
+using namespace fptest;
 std::string Program, Folder;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::printf("FAILED: %s\n", what.c_str());
-    ++Failures;
-  }
-}
 
 std::string Path(const std::string& name)
 {
   return Folder + "/" + name;
-}
-
-std::string Slurp(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void Spit(const std::string& path, const std::string& bytes)
-{
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
-std::set<std::string> Entries()
-{
-  std::set<std::string> names;
-  if (DIR* d = ::opendir(Folder.c_str()))
-  {
-    while (dirent* e = ::readdir(d))
-    {
-      names.insert(e->d_name);
-    }
-    ::closedir(d);
-  }
-  return names;
 }
 
 struct Run
@@ -186,7 +151,7 @@ std::vector<std::string> Messages(const std::string& err)
 void ExpectFailure(const std::string& what, const std::vector<std::string>& arguments, int code,
   const std::string& expected, double seconds = 20.0, const Limits& given = Limits())
 {
-  const std::set<std::string> before = Entries();
+  const std::set<std::string> before = Entries(Folder);
   Limits limits = given;
   limits.Timeout = std::max(limits.Timeout, seconds + 30.0);
   const Run run = Execute(arguments, limits);
@@ -203,7 +168,7 @@ void ExpectFailure(const std::string& what, const std::vector<std::string>& argu
   Check(run.Err.find("ERROR: In") == std::string::npos && run.Err.find("ERR|") == std::string::npos &&
       run.Err.find("vtkExecutive") == std::string::npos,
     what + ": VTK's raw error text leaked: " + run.Err);
-  Check(Entries() == before, what + ": files left behind by a failed run");
+  Check(Entries(Folder) == before, what + ": files left behind by a failed run");
 }
 
 // A run that must succeed within `seconds`; returns it.
@@ -486,7 +451,7 @@ void Signals()
     for (const char* stage : { "reading...", "extracting...", "writing...", "writing...",
            "writing..." })
     {
-      const std::set<std::string> before = Entries();
+      const std::set<std::string> before = Entries(Folder);
       Limits limits;
       limits.Signal = signal;
       limits.SignalOnMessage = stage;
@@ -496,7 +461,7 @@ void Signals()
         what + ": exit code " + std::to_string(run.Code));
       interruptedWriting +=
         run.Code == 128 + signal && std::string(stage) == "writing..." ? 1 : 0;
-      std::set<std::string> after = Entries();
+      std::set<std::string> after = Entries(Folder);
       if (after.count("signal.csv"))
       {
         // Written before the signal came (renamed into place, whole): it must hold every point.
