@@ -283,6 +283,271 @@ std::vector<ColumnTarget> TargetsByPosition(size_t n, bool pts, std::vector<Arra
   return targets;
 }
 
+// What stops a read: the error code, the line (0: the file as a whole) and what is wrong.
+struct Problem
+{
+  unsigned long Code = vtkErrorCode::NoError;
+  long Line = 0;
+  std::string What;
+};
+
+// One read of a text file, line by line: each kind of line (a PTS count, the header or the first
+// data line, a point) is one member function, which returns false with `Stop` set when the file
+// is malformed.
+struct TextParse
+{
+  int Format;
+  char Delimiter;
+  std::vector<ColumnTarget> Targets;
+  std::vector<ArraySpec> Arrays;
+  std::vector<double> XYZ;
+  std::vector<std::string_view> Fields;
+  long ReferenceLine = 0; // the header, or the first data line: it fixes the number of fields
+  bool ReferenceIsHeader = false;
+  long CountLine = 0;
+  long long DeclaredCount = -1;
+  bool First = true;
+  Problem Stop;
+
+  explicit TextParse(int format)
+    : Format(format)
+    , Delimiter(format == vtkPointCloudTextReader::CSV ? ',' : ' ')
+  {
+  }
+
+  bool Fail(unsigned long code, long line, const std::string& what)
+  {
+    this->Stop = Problem{ code, line, what };
+    return false;
+  }
+
+  vtkIdType NumberOfPoints() const { return static_cast<vtkIdType>(this->XYZ.size() / 3); }
+
+  // A line that is not empty nor a comment, trimmed.
+  bool Line(std::string_view trimmed, long number)
+  {
+    if (this->Format == vtkPointCloudTextReader::PTS && this->CountLine == 0)
+    {
+      return this->Count(trimmed, number);
+    }
+    if (this->First)
+    {
+      bool header = false;
+      if (!this->FirstLine(trimmed, number, header))
+      {
+        return false;
+      }
+      if (header)
+      {
+        return true;
+      }
+    }
+    else
+    {
+      Split(trimmed, this->Delimiter, this->Fields);
+    }
+    return this->Point(number);
+  }
+
+  // A PTS file's first line: its number of points.
+  bool Count(std::string_view trimmed, long number)
+  {
+    double count = 0.0;
+    if (!ParseNumber(trimmed, count) || count < 0 || count != std::floor(count))
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, number,
+        "a PTS file starts with its number of points; found '" + std::string(trimmed) + "'");
+    }
+    this->DeclaredCount = static_cast<long long>(count);
+    this->CountLine = number;
+    return true;
+  }
+
+  // The first line after any count: the delimiter, and the columns from the header or by
+  // position. A header has no finite number and some field that is no number at all
+  // ("x,y,z,nan" is a header, "nan,nan,nan" data): a line with some numbers is data, with a bad
+  // field.
+  bool FirstLine(std::string_view trimmed, long number, bool& header)
+  {
+    this->Delimiter = SniffDelimiter(trimmed, this->Format);
+    Split(trimmed, this->Delimiter, this->Fields);
+    bool finite = false;
+    double value;
+    header = false;
+    for (std::string_view f : this->Fields)
+    {
+      const bool isNumber = ParseNumber(f, value);
+      header = header || !isNumber;
+      finite = finite || (isNumber && std::isfinite(value));
+    }
+    header = header && !finite;
+    this->First = false;
+    this->ReferenceLine = number;
+    if (header)
+    {
+      std::vector<std::string> names;
+      for (std::string_view f : this->Fields)
+      {
+        if (f.size() >= 2 && (f.front() == '"' || f.front() == '\'') && f.back() == f.front())
+        {
+          f = f.substr(1, f.size() - 2);
+        }
+        names.emplace_back(f);
+      }
+      std::string problem;
+      this->Targets = TargetsFromHeader(names, this->Arrays, problem);
+      if (this->Targets.empty())
+      {
+        return this->Fail(vtkErrorCode::FileFormatError, number, problem);
+      }
+      this->ReferenceIsHeader = true;
+      return true;
+    }
+    const size_t n = this->Fields.size();
+    if (n < 3)
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, number,
+        "a point needs 3 coordinates; the line has " + std::to_string(n) + " field(s)");
+    }
+    if (n - 3 > vtkPointCloudTextReader::MaximumNumberOfArrays)
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, number,
+        std::to_string(n) + " fields: at most " +
+          std::to_string(vtkPointCloudTextReader::MaximumNumberOfArrays + 3) +
+          " are read (x, y, z and one point array per further column)");
+    }
+    this->Targets = TargetsByPosition(n, this->Format == vtkPointCloudTextReader::PTS, this->Arrays);
+    return true;
+  }
+
+  // The fields of a data line: the point's coordinates and its values of each array.
+  bool Point(long number)
+  {
+    const std::vector<std::string_view>& fields = this->Fields;
+    if (fields.size() != this->Targets.size())
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, number,
+        std::to_string(fields.size()) + " field(s), expected " +
+          std::to_string(this->Targets.size()) +
+          (this->ReferenceIsHeader ? " (as in the header on line " : " (as on line ") +
+          std::to_string(this->ReferenceLine) + ")");
+    }
+    // "field N ('TEXT') is not ...".
+    auto bad = [&](size_t c, const char* what) {
+      return this->Fail(vtkErrorCode::FileFormatError, number,
+        "field " + std::to_string(c + 1) + " ('" + std::string(fields[c]) + "') is not " + what);
+    };
+    double point[3] = { 0.0, 0.0, 0.0 };
+    for (size_t c = 0; c < fields.size(); ++c)
+    {
+      double value = 0.0;
+      if (!ParseNumber(fields[c], value))
+      {
+        return bad(c, "a number");
+      }
+      if (!std::isfinite(value))
+      {
+        return bad(c, "a finite number");
+      }
+      const ColumnTarget& t = this->Targets[c];
+      if (t.Coordinate >= 0)
+      {
+        point[t.Coordinate] = value;
+        continue;
+      }
+      ArraySpec& a = this->Arrays[t.Array];
+      if (a.Colour && (value < 0.0 || value > 255.0 || value != std::floor(value)))
+      {
+        return bad(c, "a colour value (an integer from 0 to 255)");
+      }
+      const size_t tuple = this->XYZ.size() / 3;
+      if (a.Values.size() < (tuple + 1) * a.Components)
+      {
+        a.Values.resize((tuple + 1) * a.Components, 0.0);
+      }
+      a.Values[tuple * a.Components + t.Component] = value;
+    }
+    this->XYZ.insert(this->XYZ.end(), point, point + 3);
+    return true;
+  }
+
+  // What only the whole file tells: a PTS count that does not match, no point at all.
+  bool Finish()
+  {
+    const vtkIdType n = this->NumberOfPoints();
+    if (this->Format == vtkPointCloudTextReader::PTS && this->CountLine == 0)
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, 0, "the file is empty (no PTS count line)");
+    }
+    if (this->DeclaredCount >= 0 && this->DeclaredCount != n)
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, this->CountLine,
+        "the count line says " + std::to_string(this->DeclaredCount) +
+          " points but the file has " + std::to_string(n));
+    }
+    if (n == 0 && this->Format != vtkPointCloudTextReader::PTS)
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, 0, "the file holds no point");
+    }
+    return true;
+  }
+
+  // The points and one array per ArraySpec (colours as unsigned char), the values handed over.
+  void FillOutput(vtkPolyData* output)
+  {
+    const vtkIdType n = this->NumberOfPoints();
+    vtkNew<vtkDoubleArray> coordinates;
+    coordinates->SetNumberOfComponents(3);
+    coordinates->SetNumberOfTuples(n);
+    std::copy(this->XYZ.begin(), this->XYZ.end(), coordinates->GetPointer(0));
+    vtkNew<vtkPoints> points;
+    points->SetData(coordinates);
+    output->SetPoints(points);
+    for (ArraySpec& a : this->Arrays)
+    {
+      a.Values.resize(static_cast<size_t>(n) * a.Components, 0.0);
+      vtkSmartPointer<vtkDataArray> array;
+      if (a.Colour)
+      {
+        auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+        colours->SetNumberOfComponents(a.Components);
+        colours->SetNumberOfTuples(n);
+        std::transform(a.Values.begin(), a.Values.end(), colours->GetPointer(0),
+          [](double v) { return static_cast<unsigned char>(v); });
+        array = colours;
+      }
+      else
+      {
+        auto values = vtkSmartPointer<vtkDoubleArray>::New();
+        values->SetNumberOfComponents(a.Components);
+        values->SetNumberOfTuples(n);
+        std::copy(a.Values.begin(), a.Values.end(), values->GetPointer(0));
+        array = values;
+      }
+      array->SetName(a.Name.c_str());
+      std::vector<double>().swap(a.Values);
+      output->GetPointData()->AddArray(array);
+      if (a.Name == "Normals" && a.Components == 3)
+      {
+        output->GetPointData()->SetNormals(array);
+      }
+      else if (a.Colour)
+      {
+        output->GetPointData()->SetScalars(array);
+      }
+    }
+  }
+};
+
+// The format of AUTOMATIC, from the file name's extension.
+int FormatOfFile(const std::string& file)
+{
+  const size_t dot = file.rfind('.');
+  const std::string extension = dot == std::string::npos ? "" : Lower(file.substr(dot + 1));
+  return extension == "csv" ? vtkPointCloudTextReader::CSV
+    : extension == "pts"    ? vtkPointCloudTextReader::PTS
+                            : vtkPointCloudTextReader::XYZ;
+}
 } // namespace
 
 vtkPointCloudTextReader::vtkPointCloudTextReader()
@@ -302,53 +567,37 @@ int vtkPointCloudTextReader::RequestData(
   this->ErrorMessage.clear();
   this->SetErrorCode(vtkErrorCode::NoError);
   const std::string file = this->FileName ? this->FileName : "";
-  auto fail = [&](unsigned long code, long line, const std::string& what) {
+  // Every error: the file, the line when there is one, and what is wrong; an empty output.
+  auto fail = [&](const Problem& problem) {
     std::ostringstream message;
     message << file;
-    if (line > 0)
+    if (problem.Line > 0)
     {
-      message << ":" << line;
+      message << ":" << problem.Line;
     }
-    message << ": " << what;
+    message << ": " << problem.What;
     this->ErrorMessage = message.str();
     vtkErrorMacro(<< this->ErrorMessage);
-    this->SetErrorCode(code);
+    this->SetErrorCode(problem.Code);
     output->Initialize();
     return 1;
   };
   if (file.empty())
   {
-    return fail(vtkErrorCode::NoFileNameError, 0, "no file name given");
+    return fail(Problem{ vtkErrorCode::NoFileNameError, 0, "no file name given" });
   }
   std::ifstream in(file, std::ios::binary);
   if (!in)
   {
-    return fail(vtkErrorCode::CannotOpenFileError, 0, "cannot open the file");
+    return fail(Problem{ vtkErrorCode::CannotOpenFileError, 0, "cannot open the file" });
   }
   in.seekg(0, std::ios::end);
   const double fileSize = std::max(1.0, static_cast<double>(in.tellg()));
   in.seekg(0, std::ios::beg);
 
-  int format = this->Format;
-  if (format == AUTOMATIC)
-  {
-    const size_t dot = file.rfind('.');
-    const std::string extension = dot == std::string::npos ? "" : Lower(file.substr(dot + 1));
-    format = extension == "csv" ? CSV : extension == "pts" ? PTS : XYZ;
-  }
-  char delimiter = format == CSV ? ',' : ' ';
-
-  std::vector<ColumnTarget> targets;
-  std::vector<ArraySpec> arrays;
-  std::vector<double> xyz;
-  std::vector<std::string_view> fields;
+  TextParse parse(this->Format == AUTOMATIC ? FormatOfFile(file) : this->Format);
   std::string text;
   long lineNumber = 0;
-  long referenceLine = 0; // the header, or the first data line: it fixes the number of fields
-  bool referenceIsHeader = false;
-  long countLine = 0;
-  long long declaredCount = -1;
-  bool first = true;
   while (std::getline(in, text))
   {
     ++lineNumber;
@@ -366,188 +615,28 @@ int vtkPointCloudTextReader::RequestData(
     {
       continue;
     }
-    if (format == PTS && countLine == 0)
+    const vtkIdType before = parse.NumberOfPoints();
+    if (!parse.Line(trimmed, lineNumber))
     {
-      double count = 0.0;
-      if (!ParseNumber(trimmed, count) || count < 0 || count != std::floor(count))
-      {
-        return fail(vtkErrorCode::FileFormatError, lineNumber,
-          "a PTS file starts with its number of points; found '" + std::string(trimmed) + "'");
-      }
-      declaredCount = static_cast<long long>(count);
-      countLine = lineNumber;
-      continue;
+      return fail(parse.Stop);
     }
-    if (first)
-    {
-      delimiter = SniffDelimiter(trimmed, format);
-      Split(trimmed, delimiter, fields);
-      // A header has no finite number and some field that is no number at all ("x,y,z,nan" is
-      // a header, "nan,nan,nan" data): a line with some numbers is data, with a bad field.
-      bool header = false, finite = false;
-      double value;
-      for (std::string_view f : fields)
-      {
-        const bool number = ParseNumber(f, value);
-        header = header || !number;
-        finite = finite || (number && std::isfinite(value));
-      }
-      header = header && !finite;
-      if (header)
-      {
-        std::vector<std::string> names;
-        for (std::string_view f : fields)
-        {
-          if (f.size() >= 2 && (f.front() == '"' || f.front() == '\'') && f.back() == f.front())
-          {
-            f = f.substr(1, f.size() - 2);
-          }
-          names.emplace_back(f);
-        }
-        std::string problem;
-        targets = TargetsFromHeader(names, arrays, problem);
-        if (targets.empty())
-        {
-          return fail(vtkErrorCode::FileFormatError, lineNumber, problem);
-        }
-        first = false;
-        referenceLine = lineNumber;
-        referenceIsHeader = true;
-        continue;
-      }
-      if (fields.size() < 3)
-      {
-        return fail(vtkErrorCode::FileFormatError, lineNumber,
-          "a point needs 3 coordinates; the line has " + std::to_string(fields.size()) +
-            " field(s)");
-      }
-      if (fields.size() - 3 > vtkPointCloudTextReader::MaximumNumberOfArrays)
-      {
-        return fail(vtkErrorCode::FileFormatError, lineNumber,
-          std::to_string(fields.size()) + " fields: at most " +
-            std::to_string(vtkPointCloudTextReader::MaximumNumberOfArrays + 3) +
-            " are read (x, y, z and one point array per further column)");
-      }
-      targets = TargetsByPosition(fields.size(), format == PTS, arrays);
-      first = false;
-      referenceLine = lineNumber;
-    }
-    else
-    {
-      Split(trimmed, delimiter, fields);
-    }
-    if (fields.size() != targets.size())
-    {
-      return fail(vtkErrorCode::FileFormatError, lineNumber,
-        std::to_string(fields.size()) + " field(s), expected " + std::to_string(targets.size()) +
-          (referenceIsHeader ? " (as in the header on line " : " (as on line ") +
-          std::to_string(referenceLine) + ")");
-    }
-    double point[3] = { 0.0, 0.0, 0.0 };
-    for (size_t c = 0; c < fields.size(); ++c)
-    {
-      double value = 0.0;
-      if (!ParseNumber(fields[c], value))
-      {
-        return fail(vtkErrorCode::FileFormatError, lineNumber,
-          "field " + std::to_string(c + 1) + " ('" + std::string(fields[c]) +
-            "') is not a number");
-      }
-      if (!std::isfinite(value))
-      {
-        return fail(vtkErrorCode::FileFormatError, lineNumber,
-          "field " + std::to_string(c + 1) + " ('" + std::string(fields[c]) +
-            "') is not a finite number");
-      }
-      const ColumnTarget& t = targets[c];
-      if (t.Coordinate >= 0)
-      {
-        point[t.Coordinate] = value;
-        continue;
-      }
-      ArraySpec& a = arrays[t.Array];
-      if (a.Colour && (value < 0.0 || value > 255.0 || value != std::floor(value)))
-      {
-        return fail(vtkErrorCode::FileFormatError, lineNumber,
-          "field " + std::to_string(c + 1) + " ('" + std::string(fields[c]) +
-            "') is not a colour value (an integer from 0 to 255)");
-      }
-      const size_t tuple = xyz.size() / 3;
-      if (a.Values.size() < (tuple + 1) * a.Components)
-      {
-        a.Values.resize((tuple + 1) * a.Components, 0.0);
-      }
-      a.Values[tuple * a.Components + t.Component] = value;
-    }
-    xyz.insert(xyz.end(), point, point + 3);
-    if ((xyz.size() / 3) % 65536 == 0)
+    if (parse.NumberOfPoints() != before && parse.NumberOfPoints() % 65536 == 0)
     {
       this->UpdateProgress(std::min(0.99, static_cast<double>(in.tellg()) / fileSize));
     }
   }
   if (in.bad())
   {
-    return fail(vtkErrorCode::PrematureEndOfFileError, lineNumber, "read error");
+    return fail(Problem{ vtkErrorCode::PrematureEndOfFileError, lineNumber, "read error" });
   }
-  const vtkIdType n = static_cast<vtkIdType>(xyz.size() / 3);
-  if (format == PTS && countLine == 0)
+  if (!parse.Finish())
   {
-    return fail(vtkErrorCode::FileFormatError, 0, "the file is empty (no PTS count line)");
+    return fail(parse.Stop);
   }
-  if (declaredCount >= 0 && declaredCount != n)
-  {
-    return fail(vtkErrorCode::FileFormatError, countLine,
-      "the count line says " + std::to_string(declaredCount) + " points but the file has " +
-        std::to_string(n));
-  }
-  if (n == 0 && format != PTS)
-  {
-    return fail(vtkErrorCode::FileFormatError, 0, "the file holds no point");
-  }
-
-  vtkNew<vtkDoubleArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(n);
-  std::copy(xyz.begin(), xyz.end(), coordinates->GetPointer(0));
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  output->SetPoints(points);
-  for (ArraySpec& a : arrays)
-  {
-    a.Values.resize(static_cast<size_t>(n) * a.Components, 0.0);
-    vtkSmartPointer<vtkDataArray> array;
-    if (a.Colour)
-    {
-      auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
-      colours->SetNumberOfComponents(a.Components);
-      colours->SetNumberOfTuples(n);
-      std::transform(a.Values.begin(), a.Values.end(), colours->GetPointer(0),
-        [](double v) { return static_cast<unsigned char>(v); });
-      array = colours;
-    }
-    else
-    {
-      auto values = vtkSmartPointer<vtkDoubleArray>::New();
-      values->SetNumberOfComponents(a.Components);
-      values->SetNumberOfTuples(n);
-      std::copy(a.Values.begin(), a.Values.end(), values->GetPointer(0));
-      array = values;
-    }
-    array->SetName(a.Name.c_str());
-    std::vector<double>().swap(a.Values);
-    output->GetPointData()->AddArray(array);
-    if (a.Name == "Normals" && a.Components == 3)
-    {
-      output->GetPointData()->SetNormals(array);
-    }
-    else if (a.Colour)
-    {
-      output->GetPointData()->SetScalars(array);
-    }
-  }
+  parse.FillOutput(output);
   if (this->CreateVertexCells)
   {
-    output->SetVerts(vtkPointCloudIO::MakeVertexCells(n));
+    output->SetVerts(vtkPointCloudIO::MakeVertexCells(parse.NumberOfPoints()));
   }
   this->UpdateProgress(1.0);
   return 1;
