@@ -10,6 +10,8 @@
 // so the region within 5 s of a cut is not scored (as in FeaturePointsQualityBenchmark).
 // With --check, figures are compared with floors (a little below those measured when they were
 // set) and the program fails when quality is lost.
+#include "FeaturePointsBenchmarkFigures.h"
+
 #include "vtkCellArray.h"
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkFeatureCurveExtraction.h"
@@ -34,26 +36,8 @@
 
 namespace
 {
-int failures = 0;
-bool check = false;
+using namespace fpbench;
 bool verbose = false;
-
-void Floor(const std::string& what, double value, double floor)
-{
-  if (check && !(value >= floor))
-  {
-    std::printf("  FAIL: %s = %.3f, below its floor %.3f\n", what.c_str(), value, floor);
-    ++failures;
-  }
-}
-void Ceiling(const std::string& what, double value, double ceiling)
-{
-  if (check && !(value <= ceiling))
-  {
-    std::printf("  FAIL: %s = %.3f, above its ceiling %.3f\n", what.c_str(), value, ceiling);
-    ++failures;
-  }
-}
 
 // The scored region: all but the 5 s next to the cut edges of the sheets and Model III's tube.
 struct Region
@@ -278,16 +262,6 @@ void Header()
     "points", "P", "R", "F1", "lines / true", "dist", "s");
 }
 
-double Median(std::vector<double> v)
-{
-  if (v.empty())
-  {
-    return 0.0;
-  }
-  std::sort(v.begin(), v.end());
-  const size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -303,7 +277,7 @@ int main(int argc, char* argv[])
     }
     else if (a == "--check")
     {
-      check = true;
+      CheckFigures = true;
     }
     else if (a == "--verbose")
     {
@@ -416,16 +390,16 @@ int main(int argc, char* argv[])
 
   if (f1s.empty())
   {
-    return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+    return Failures ? EXIT_FAILURE : EXIT_SUCCESS;
   }
   std::printf("\nall rows: F1 lowest %.3f, median %.3f; lines / true highest %.2f, median %.2f; "
               "dist at sigma 0.5 s highest %.2f, median %.2f\n",
     *std::min_element(f1s.begin(), f1s.end()), Median(f1s),
     *std::max_element(perCurve.begin(), perCurve.end()), Median(perCurve),
     *std::max_element(distances.begin(), distances.end()), Median(distances));
-  if (check)
+  if (CheckFigures)
   {
-    std::printf("\n%s: %d figure(s) past their floor\n", failures ? "FAILED" : "passed", failures);
+    std::printf("\n%s: %d figure(s) past their floor\n", Failures ? "FAILED" : "passed", Failures);
   }
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  return Failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -7,6 +7,8 @@
 // - The labelled PCEDNet clouds (coordinates only given to the detectors): precision, recall and
 //   MCC per model, medians per folder and over all models.
 // Prints text tables and writes every row to a CSV file.
+#include "FeaturePointsBenchmarkFigures.h"
+
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkFeatureModelSource.h"
@@ -37,6 +39,7 @@
 
 namespace
 {
+using namespace fpbench;
 struct Method
 {
   const char* Name;
@@ -109,8 +112,6 @@ struct Options
   bool PcednetGiven = false;
 };
 
-int failures = 0;
-
 void CheckFinite(const Row& r)
 {
   for (double v : { r.Pr, r.Pt, r.Precision, r.Recall, r.F1, r.MCC, r.Seconds })
@@ -118,7 +119,7 @@ void CheckFinite(const Row& r)
     if (!std::isfinite(v))
     {
       std::fprintf(stderr, "error: non-finite figure for %s / %s\n", r.Dataset.c_str(), r.Method.c_str());
-      ++failures;
+      ++Failures;
     }
   }
 }
@@ -159,7 +160,7 @@ Row EvaluateSynthetic(vtkFeaturePointDetector* filter, vtkPolyData* model, doubl
         model->GetPointData()->GetArray("FeatureDistance"), s))
   {
     std::fprintf(stderr, "error: %s\n", evaluation->GetErrorText().c_str());
-    ++failures;
+    ++Failures;
   }
   Row r = FromEvaluation(evaluation, seconds);
   r.OracleF1 = OracleF1(filter->GetOutput()->GetPointData()->GetArray(filter->GetScoreArrayName()),
@@ -184,17 +185,6 @@ vtkSmartPointer<vtkPolyData> PointsOnly(vtkPolyData* data)
   auto p = vtkSmartPointer<vtkPolyData>::New();
   p->SetPoints(data->GetPoints());
   return p;
-}
-
-double Median(std::vector<double> v)
-{
-  if (v.empty())
-  {
-    return 0.0;
-  }
-  std::sort(v.begin(), v.end());
-  const size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 std::string Percent(double v)
@@ -367,7 +357,7 @@ int main(int argc, char* argv[])
     if (o.PcednetGiven)
     {
       std::fprintf(stderr, "error: --pcednet %s: no .ply file found\n", o.Pcednet.c_str());
-      ++failures;
+      ++Failures;
     }
   }
   else
@@ -401,7 +391,7 @@ int main(int argc, char* argv[])
       {
         std::fprintf(stderr, "error: %s: no points or no colour labels (red, green, blue)\n",
           file.string().c_str());
-        ++failures;
+        ++Failures;
         continue;
       }
       const std::string folder = file.parent_path().filename().string();
@@ -424,7 +414,7 @@ int main(int argc, char* argv[])
               filter->GetOutput()->GetPointData()->GetArray("FeatureMask"), labels))
         {
           std::fprintf(stderr, "error: %s: %s\n", name.c_str(), evaluation->GetErrorText().c_str());
-          ++failures;
+          ++Failures;
         }
         Row r = FromEvaluation(evaluation, seconds);
         r.Section = "pcednet";
@@ -490,5 +480,5 @@ int main(int argc, char* argv[])
     return 1;
   }
   std::printf("\nCSV: %s (%zu rows)\n", o.Csv.c_str(), rows.size());
-  return failures ? 1 : 0;
+  return Failures ? 1 : 0;
 }

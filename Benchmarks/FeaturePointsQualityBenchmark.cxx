@@ -15,6 +15,8 @@
 //   true corner and border points typed so.
 // With --check, every figure is compared with a floor (a little below the figure measured when the
 // floor was set) and the program fails when quality is lost.
+#include "FeaturePointsBenchmarkFigures.h"
+
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -42,6 +44,7 @@
 
 namespace
 {
+using namespace fpbench;
 struct Method
 {
   const char* Name;
@@ -56,8 +59,6 @@ std::vector<Method> Methods()
   };
 }
 
-int failures = 0;
-bool check = false;
 // Measured on the five test clouds: 0.341 (band; the open sheets of default/ lose their
 // unlabelled borders' points: TwoPlane90 0.613 without borders, 0.243 with) and 0.586 (thin).
 constexpr double PcednetFloor = 0.32;
@@ -65,23 +66,6 @@ constexpr double PcednetThinFloor = 0.56;
 
 // Floors of the default detector ("Crease") at --scale 0.3, set from the figures measured when
 // this benchmark was written, a little below them.
-void Floor(const std::string& what, double value, double floor)
-{
-  if (check && !(value >= floor))
-  {
-    std::printf("  FAIL: %s = %.3f, below its floor %.3f\n", what.c_str(), value, floor);
-    ++failures;
-  }
-}
-void Ceiling(const std::string& what, double value, double ceiling)
-{
-  if (check && !(value <= ceiling))
-  {
-    std::printf("  FAIL: %s = %.3f, above its ceiling %.3f\n", what.c_str(), value, ceiling);
-    ++failures;
-  }
-}
-
 // The paper's models and the parallel creases are square sheets cut from a larger surface (and
 // Model III's cylinder a tube cut at z = +-0.25 Size): their outer edges are crops, not features
 // of the ground truth, but borders of the cloud, which the default detector marks (FeatureType
@@ -197,17 +181,6 @@ double PrintScores(const Method& method, vtkPolyData* cloud, double s, bool name
   return evaluation->GetF1();
 }
 
-double Median(std::vector<double> v)
-{
-  if (v.empty())
-  {
-    return 0.0;
-  }
-  std::sort(v.begin(), v.end());
-  const size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
 void Usage(const char* name)
 {
   std::printf("usage: %s [--scale F] [--pcednet DIR] [--check]\n"
@@ -238,7 +211,7 @@ int main(int argc, char* argv[])
     }
     else if (a == "--check")
     {
-      check = true;
+      CheckFigures = true;
     }
     else
     {
@@ -382,7 +355,7 @@ int main(int argc, char* argv[])
     if (!labels || data->GetNumberOfPoints() == 0)
     {
       std::fprintf(stderr, "error: %s: no points or no colour labels\n", file.c_str());
-      ++failures;
+      ++Failures;
       continue;
     }
     vtkNew<vtkPolyData> coordinates; // the detectors get the coordinates only
@@ -642,9 +615,9 @@ int main(int argc, char* argv[])
   }
   std::printf("Crease: lowest F1 %.3f, median %.3f\n",
     *std::min_element(caseF1.begin(), caseF1.end()), Median(caseF1));
-  if (check)
+  if (CheckFigures)
   {
-    std::printf("\n%s: %d figure(s) below their floor\n", failures ? "FAILED" : "passed", failures);
+    std::printf("\n%s: %d figure(s) below their floor\n", Failures ? "FAILED" : "passed", Failures);
   }
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  return Failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
