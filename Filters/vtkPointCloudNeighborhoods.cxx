@@ -5,6 +5,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFeaturePointsLocalPCA.h"
 #include "vtkFeaturePointsStatistics.h"
+#include "vtkFeaturePointsVertexCells.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkIdList.h"
@@ -1253,31 +1254,7 @@ bool vtkPointCloudNeighborhoods::FindNearestNeighborsOnGrid(int k,
 
 vtkSmartPointer<vtkCellArray> vtkPointCloudNeighborhoods::MakeVertexCells(vtkIdType n)
 {
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  auto fill = [n, &cells](auto offsets, auto connectivity) {
-    offsets->SetNumberOfValues(n + 1);
-    connectivity->SetNumberOfValues(n);
-    vtkSMPTools::For(0, n + 1, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        offsets->SetValue(i, i);
-        if (i < n)
-        {
-          connectivity->SetValue(i, i);
-        }
-      }
-    });
-    cells->SetData(offsets, connectivity);
-  };
-  if (n < std::numeric_limits<int32_t>::max())
-  {
-    fill(vtkSmartPointer<vtkTypeInt32Array>::New(), vtkSmartPointer<vtkTypeInt32Array>::New());
-  }
-  else
-  {
-    fill(vtkSmartPointer<vtkTypeInt64Array>::New(), vtkSmartPointer<vtkTypeInt64Array>::New());
-  }
-  return cells;
+  return featurepoints::MakeVertexCells(n);
 }
 
 void vtkPointCloudNeighborhoods::PrintSelf(ostream& os, vtkIndent indent)

@@ -171,8 +171,8 @@ public:
   vtkPoints* GetPoints() const;
 
   /**
-   * One vertex cell per point (0 .. n-1), with 32-bit storage when n allows: how the filters of this
-   * module make a cloud render as is.
+   * One vertex cell per point (0 .. n-1), with 32-bit storage when n allows (nullptr when the
+   * memory cannot be had): how the filters of this module make a cloud render as is.
    */
   static vtkSmartPointer<vtkCellArray> MakeVertexCells(vtkIdType n);
 

@@ -6,7 +6,7 @@
 #include "vtkDataSetWriter.h"
 #include "vtkErrorCode.h"
 #include "vtkExecutive.h"
-#include "vtkIdTypeArray.h"
+#include "vtkFeaturePointsVertexCells.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPointCloudPLYReader.h"
@@ -32,7 +32,6 @@
 #include <memory>
 #include <mutex>
 #include <new>
-#include <numeric>
 #include <random>
 #include <stdexcept>
 #include <csignal>
@@ -317,20 +316,7 @@ std::string TemporaryName(const std::string& prefix)
 
 vtkSmartPointer<vtkCellArray> vtkPointCloudIO::MakeVertexCells(vtkIdType n)
 {
-  vtkNew<vtkIdTypeArray> offsets;
-  vtkNew<vtkIdTypeArray> connectivity;
-  // SetNumberOfValues reports a failed allocation by leaving the size unchanged.
-  offsets->SetNumberOfValues(n + 1);
-  connectivity->SetNumberOfValues(n);
-  if (offsets->GetNumberOfValues() != n + 1 || connectivity->GetNumberOfValues() != n)
-  {
-    return nullptr;
-  }
-  std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, vtkIdType(0));
-  std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, vtkIdType(0));
-  auto verts = vtkSmartPointer<vtkCellArray>::New();
-  verts->SetData(offsets, connectivity);
-  return verts;
+  return featurepoints::MakeVertexCells(n);
 }
 
 std::string vtkPointCloudIO::GetExtension(const std::string& fileName)

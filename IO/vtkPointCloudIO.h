@@ -107,7 +107,10 @@ public:
    */
   static void RemoveTemporaryFileInProgress();
 
-  /** One vertex cell per point, 0 to n-1 (nullptr when the memory cannot be had). */
+  /**
+   * One vertex cell per point, 0 to n-1, with 32-bit storage when n allows (nullptr when the
+   * memory cannot be had). The same cells as vtkPointCloudNeighborhoods::MakeVertexCells().
+   */
   static vtkSmartPointer<vtkCellArray> MakeVertexCells(vtkIdType n);
 
   /** The message of a VTK error or warning event, without its "ERROR: In file, line" preamble. */
