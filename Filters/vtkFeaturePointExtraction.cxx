@@ -176,8 +176,177 @@ struct ScoreWorker
 
 } // namespace
 
+// The points a run scores and their neighbourhoods: the voxel pre-filter's candidates (or every
+// valid point) and, for the AUTOMATIC threshold, the background sample among them.
+struct vtkFeaturePointExtraction::ScoredPoints
+{
+  std::vector<vtkIdType> Ids;        // in point order
+  std::vector<int32_t> Table;        // their k nearest, row r for Ids[r]
+  std::vector<vtkIdType> Background; // the sampled non-candidates (scored, never marked)
+  int BackgroundWeight = 1;          // how many non-candidates each of them stands for
+  double Spacing = 0.0;              // the mean spacing d
+  bool Screen = false;               // the voxel pre-filter runs (its sample showed contrast)
+  bool ScoreAll = true;              // every valid point is a candidate
+};
+
+namespace
+{
+// The voxel density-contrast test with the filter's parameters.
+featurepoints::DensityContrast MakeVoxelTest(vtkFeaturePointExtraction* self)
+{
+  featurepoints::DensityContrast voxels;
+  voxels.VoxelSizeFactor = self->GetVoxelSizeFactor();
+  voxels.DensityContrast = self->GetDensityContrast();
+  voxels.ContrastRule = self->GetVoxelContrastRule();
+  voxels.Reporter = self;
+  return voxels;
+}
+} // namespace
+
 vtkFeaturePointExtraction::vtkFeaturePointExtraction() = default;
 vtkFeaturePointExtraction::~vtkFeaturePointExtraction() = default;
+
+bool vtkFeaturePointExtraction::MeasureSpacing(
+  vtkPointCloudNeighborhoods* neighborhoods, int k, ScoredPoints& scored)
+{
+  // A sample of the cloud that shows no density contrast: the full test would most likely find
+  // none either, and its 1-nearest pass is skipped (see the header).
+  scored.Screen = this->UseVoxelFilter;
+  if (scored.Screen)
+  {
+    this->BeginStage("voxel screen");
+    scored.Screen = MakeVoxelTest(this).SampleShowsContrast(neighborhoods);
+  }
+  // Without the pre-filter every point is scored: its k-nearest table also gives the spacing, so
+  // each point is searched once. With it, a 1-nearest pass over all points comes first.
+  if (scored.Screen)
+  {
+    this->BeginStage("spacing");
+    scored.Spacing = neighborhoods->ComputeMeanSpacing();
+  }
+  else
+  {
+    this->BeginStage("neighbours");
+    scored.Ids = neighborhoods->GetValidIds();
+    if (!neighborhoods->FindNearestNeighbors(k, scored.Ids, scored.Table, nullptr, this, 0.0, 0.6))
+    {
+      return false;
+    }
+    scored.Spacing = neighborhoods->ComputeMeanSpacing(scored.Ids, scored.Table, k);
+  }
+  this->UpdateProgress(0.1);
+  return !this->GetAbortExecute() && this->CheckSpacing(scored.Spacing, neighborhoods);
+}
+
+void vtkFeaturePointExtraction::MarkCandidates(
+  vtkPointCloudNeighborhoods* neighborhoods, ScoredPoints& scored, unsigned char* isCandidate)
+{
+  const unsigned char* valid = neighborhoods->GetValidMask();
+  scored.ScoreAll = !scored.Screen;
+  if (scored.Screen)
+  {
+    this->BeginStage("voxel filter");
+    featurepoints::DensityContrast voxels = MakeVoxelTest(this);
+    voxels.MarkCandidates(neighborhoods->GetPoints(), valid, scored.Spacing,
+      neighborhoods->GetNearestDistances().data(), isCandidate);
+    // No density contrast anywhere: the cloud is uniformly sampled and the step would drop every
+    // feature, so every point is scored instead.
+    scored.ScoreAll = voxels.NumberOfContrastVoxels == 0;
+  }
+  if (scored.ScoreAll)
+  {
+    std::copy(valid, valid + neighborhoods->GetNumberOfPoints(), isCandidate);
+  }
+}
+
+bool vtkFeaturePointExtraction::FindScoredNeighbors(vtkPointCloudNeighborhoods* neighborhoods,
+  int k, const unsigned char* isCandidate, ScoredPoints& scored)
+{
+  if (!scored.Screen)
+  {
+    return true; // MeasureSpacing searched every valid point already
+  }
+  // The candidates, and for the AUTOMATIC threshold the other points of a sample of whole blocks
+  // (SampleBackground), so that the threshold sees the cloud's background rather than the
+  // candidates' feature-rich population alone. The sample is scored but never marked, and its
+  // scores are cleared from the output.
+  vtkPoints* points = neighborhoods->GetPoints();
+  const vtkIdType n = neighborhoods->GetNumberOfPoints();
+  if (this->ThresholdMode == AUTOMATIC && !scored.ScoreAll)
+  {
+    scored.BackgroundWeight = this->SampleBackground(points, neighborhoods->GetValidMask(),
+      isCandidate, scored.Spacing, neighborhoods->GetBounds(), scored.Background);
+  }
+  std::vector<unsigned char> sampled(n, 0);
+  for (vtkIdType id : scored.Background)
+  {
+    sampled[id] = 1;
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (isCandidate[i] || sampled[i])
+    {
+      scored.Ids.push_back(i);
+    }
+  }
+  // One k-nearest query per scored point, for every quantity.
+  this->BeginStage("neighbours");
+  return neighborhoods->FindNearestNeighbors(k, scored.Ids, scored.Table, nullptr, this, 0.1, 0.7);
+}
+
+bool vtkFeaturePointExtraction::ComputeMeanDistances(vtkPointCloudNeighborhoods* neighborhoods,
+  int k, const ScoredPoints& scored, std::vector<double>& meanDistance)
+{
+  const std::vector<vtkIdType>& ids = scored.Ids;
+  const vtkIdType n = neighborhoods->GetNumberOfPoints();
+  const double floor = MinimumMeanDistance * scored.Spacing;
+  const featurepoints::PointReader reader(neighborhoods->GetPoints());
+  meanDistance.assign(n, 0.0);
+  const int kd = this->DensityNeighbors;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      meanDistance[ids[r]] = MeanDistance(reader, ids[r], scored.Table.data() + r * k, kd, floor);
+    }
+  });
+  // The neighbours a scored point weighs in Eqs. 4 and 6 that are not scored themselves.
+  const int used = std::max(this->SSINeighbors,
+    this->SSICenter == DENSITY_WEIGHTED_MEAN ? this->CenterNeighbors : 0);
+  std::vector<unsigned char> needed(n, 0);
+  for (size_t r = 0; r < ids.size(); ++r)
+  {
+    const int32_t* row = scored.Table.data() + r * k;
+    for (int j = 0; j < used && row[j] >= 0; ++j)
+    {
+      needed[row[j]] = meanDistance[row[j]] > 0.0 ? 0 : 1;
+    }
+  }
+  std::vector<vtkIdType> neighbors;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (needed[i])
+    {
+      neighbors.push_back(i);
+    }
+  }
+  if (neighbors.empty())
+  {
+    return true;
+  }
+  std::vector<int32_t> neighborTable;
+  if (!neighborhoods->FindNearestNeighbors(kd, neighbors, neighborTable, nullptr, this, 0.7, 0.8))
+  {
+    return false;
+  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(neighbors.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      meanDistance[neighbors[r]] =
+        MeanDistance(reader, neighbors[r], neighborTable.data() + r * kd, kd, floor);
+    }
+  });
+  return true;
+}
 
 int vtkFeaturePointExtraction::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -191,7 +360,6 @@ int vtkFeaturePointExtraction::RequestData(
   this->ResetFigures();
 
   const vtkIdType n = input->GetNumberOfPoints();
-  vtkPoints* points = input->GetPoints();
   auto normals = featurepoints::NewZeroArray<vtkFloatArray>("Normals", 3, n);
   auto ssi = featurepoints::NewZeroArray<vtkFloatArray>("SSI", 1, n);
   auto pdi = featurepoints::NewZeroArray<vtkFloatArray>("PDI", 1, n);
@@ -210,173 +378,56 @@ int vtkFeaturePointExtraction::RequestData(
     std::max(this->DensityNeighbors,
       this->SSICenter == DENSITY_WEIGHTED_MEAN ? this->CenterNeighbors : 0));
   vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
-  if (!this->PrepareNeighborhoods(points, n, k, neighborhoods))
-  {
-    return finish();
-  }
-  points = neighborhoods->GetPoints(); // renumbered (see PrepareNeighborhoods)
-
-  // Without the pre-filter every point is scored: its k-nearest table also gives the spacing, so
-  // each point is searched once. With it, a 1-nearest pass over all points comes first.
-  std::vector<vtkIdType> ids;
-  std::vector<int32_t> table;
-  double d = 0.0;
-  // A sample of the cloud that shows no density contrast: the full test would most likely find
-  // none either, and its 1-nearest pass is skipped (see the header).
-  featurepoints::DensityContrast voxels;
-  voxels.VoxelSizeFactor = this->VoxelSizeFactor;
-  voxels.DensityContrast = this->DensityContrast;
-  voxels.ContrastRule = this->VoxelContrastRule;
-  voxels.Reporter = this;
-  bool screen = this->UseVoxelFilter;
-  if (screen)
-  {
-    this->BeginStage("voxel screen");
-    screen = voxels.SampleShowsContrast(neighborhoods);
-  }
-  if (screen)
-  {
-    this->BeginStage("spacing");
-    d = neighborhoods->ComputeMeanSpacing();
-  }
-  else
-  {
-    this->BeginStage("neighbours");
-    ids = neighborhoods->GetValidIds();
-    if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.0, 0.6))
-    {
-      return finish();
-    }
-    d = neighborhoods->ComputeMeanSpacing(ids, table, k);
-  }
-  this->UpdateProgress(0.1);
-  if (this->GetAbortExecute())
-  {
-    return finish();
-  }
-  if (!this->CheckSpacing(d, neighborhoods))
+  if (!this->PrepareNeighborhoods(input->GetPoints(), n, k, neighborhoods))
   {
     return finish();
   }
 
-  // Section 3.2: candidates of the voxel pre-filter, or every valid point.
+  // Section 3.2: the mean spacing, the candidates of the voxel pre-filter (or every valid point)
+  // and the neighbourhoods of the scored points.
+  ScoredPoints scored;
   unsigned char* isCandidate = candidate->GetPointer(0);
-  const unsigned char* valid = neighborhoods->GetValidMask();
-  bool scoreAll = !screen;
-  if (screen)
+  if (!this->MeasureSpacing(neighborhoods, k, scored))
   {
-    this->BeginStage("voxel filter");
-    voxels.MarkCandidates(
-      points, valid, d, neighborhoods->GetNearestDistances().data(), isCandidate);
-    // No density contrast anywhere: the cloud is uniformly sampled and the step would drop every
-    // feature, so every point is scored instead.
-    scoreAll = voxels.NumberOfContrastVoxels == 0;
+    return finish();
   }
-  if (scoreAll)
+  this->MarkCandidates(neighborhoods, scored, isCandidate);
+  if (!this->FindScoredNeighbors(neighborhoods, k, isCandidate, scored))
   {
-    std::copy(valid, valid + n, isCandidate);
+    return finish();
   }
-  // The scored points: the candidates, and for the AUTOMATIC threshold the other points of a
-  // sample of whole blocks (SampleBackground), so that the threshold sees the cloud's background
-  // rather than the candidates' feature-rich population alone. The sample is scored but never
-  // marked, and its scores are cleared from the output.
-  std::vector<vtkIdType> background;
-  int backgroundWeight = 1;
-  if (screen)
-  {
-    if (this->ThresholdMode == AUTOMATIC && !scoreAll)
-    {
-      backgroundWeight = this->SampleBackground(points, valid, isCandidate, d,
-        neighborhoods->GetBounds(), background);
-    }
-    std::vector<unsigned char> sampled(n, 0);
-    for (vtkIdType id : background)
-    {
-      sampled[id] = 1;
-    }
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      if (isCandidate[i] || sampled[i])
-      {
-        ids.push_back(i);
-      }
-    }
-    // One k-nearest query per scored point, for every quantity.
-    this->BeginStage("neighbours");
-    if (!neighborhoods->FindNearestNeighbors(k, ids, table, nullptr, this, 0.1, 0.7))
-    {
-      return finish();
-    }
-  }
-  this->NumberOfCandidates = static_cast<vtkIdType>(ids.size() - background.size());
+  const std::vector<vtkIdType>& ids = scored.Ids;
+  this->NumberOfCandidates = static_cast<vtkIdType>(ids.size() - scored.Background.size());
 
-  // m(j) for the candidates and for every point a candidate weighs in Eqs. 4 and 6.
+  // m(j) for the scored points and for every point they weigh in Eqs. 4 and 6, then the scores.
   this->BeginStage("scores");
-  const double floor = MinimumMeanDistance * d;
-  const featurepoints::PointReader reader(points);
-  std::vector<double> meanDistance(n, 0.0);
-  const int kd = this->DensityNeighbors;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      meanDistance[ids[r]] = MeanDistance(reader, ids[r], table.data() + r * k, kd, floor);
-    }
-  });
-  const int used = std::max(this->SSINeighbors,
-    this->SSICenter == DENSITY_WEIGHTED_MEAN ? this->CenterNeighbors : 0);
-  std::vector<unsigned char> needed(n, 0);
-  for (size_t r = 0; r < ids.size(); ++r)
+  std::vector<double> meanDistance;
+  if (!this->ComputeMeanDistances(neighborhoods, k, scored, meanDistance))
   {
-    const int32_t* row = table.data() + r * k;
-    for (int j = 0; j < used && row[j] >= 0; ++j)
-    {
-      needed[row[j]] = meanDistance[row[j]] > 0.0 ? 0 : 1;
-    }
+    return finish();
   }
-  std::vector<vtkIdType> neighbors;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    if (needed[i])
-    {
-      neighbors.push_back(i);
-    }
-  }
-  if (!neighbors.empty())
-  {
-    std::vector<int32_t> neighborTable;
-    if (!neighborhoods->FindNearestNeighbors(kd, neighbors, neighborTable, nullptr, this, 0.7, 0.8))
-    {
-      return finish();
-    }
-    vtkSMPTools::For(0, static_cast<vtkIdType>(neighbors.size()), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType r = begin; r < end; ++r)
-      {
-        meanDistance[neighbors[r]] =
-          MeanDistance(reader, neighbors[r], neighborTable.data() + r * kd, kd, floor);
-      }
-    });
-  }
-
+  const double d = scored.Spacing;
   ScoreParameters parameters{ k, this->NormalNeighbors, this->SSINeighbors, this->DensityNeighbors,
     this->CenterNeighbors, this->SSICenter == DENSITY_WEIGHTED_MEAN, this->Alpha, d,
     this->GaussianRadiusFactor * d,
     { neighborhoods->GetCenter()[0], neighborhoods->GetCenter()[1],
       neighborhoods->GetCenter()[2] } };
-  ScoreWorker worker{ reader, ids, table.data(), meanDistance.data(), parameters,
-    normals->GetPointer(0), ssi->GetPointer(0), pdi->GetPointer(0), score->GetPointer(0), {} };
+  ScoreWorker worker{ featurepoints::PointReader(neighborhoods->GetPoints()), ids,
+    scored.Table.data(), meanDistance.data(), parameters, normals->GetPointer(0),
+    ssi->GetPointer(0), pdi->GetPointer(0), score->GetPointer(0), {} };
   vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), worker);
   this->UpdateProgress(0.9);
 
   // Threshold and mask, decided on the stored (float) F so that the output agrees with itself.
-  // For the AUTOMATIC rule each background point stands for backgroundWeight non-candidates (the
+  // For the AUTOMATIC rule each background point stands for BackgroundWeight non-candidates (the
   // non-candidates of the blocks SampleBackground did not sample).
   std::vector<int> weights(ids.size(), 1);
   for (size_t r = 0; r < ids.size(); ++r)
   {
-    weights[r] = isCandidate[ids[r]] ? 1 : backgroundWeight;
+    weights[r] = isCandidate[ids[r]] ? 1 : scored.BackgroundWeight;
   }
   this->ApplyThreshold(score->GetPointer(0), ids, &weights, isCandidate, mask->GetPointer(0));
-  for (vtkIdType id : background)
+  for (vtkIdType id : scored.Background)
   {
     std::fill_n(normals->GetPointer(3 * id), 3, 0.0f);
     ssi->SetValue(id, 0.0f);

@@ -197,6 +197,24 @@ protected:
     const unsigned char* isCandidate, double spacing, const double bounds[6],
     std::vector<vtkIdType>& background);
 
+  ///@{
+  /**
+   * The stages of RequestData before the scores (Section 3.2): the mean spacing (after the voxel
+   * pre-filter's quick screen, or from every point's k-nearest table without it), the voxel
+   * pre-filter's candidates, the k nearest of every scored point, and m(j) (Eq. 7) for the scored
+   * points and the neighbours they weigh. A stage that returns false ends the run (aborted, or no
+   * usable spacing).
+   */
+  struct ScoredPoints;
+  bool MeasureSpacing(vtkPointCloudNeighborhoods* neighborhoods, int k, ScoredPoints& scored);
+  void MarkCandidates(
+    vtkPointCloudNeighborhoods* neighborhoods, ScoredPoints& scored, unsigned char* isCandidate);
+  bool FindScoredNeighbors(vtkPointCloudNeighborhoods* neighborhoods, int k,
+    const unsigned char* isCandidate, ScoredPoints& scored);
+  bool ComputeMeanDistances(vtkPointCloudNeighborhoods* neighborhoods, int k,
+    const ScoredPoints& scored, std::vector<double>& meanDistance);
+  ///@}
+
   double Alpha = 0.75;
   int NormalNeighbors = 15;
   int SSINeighbors = 50;
