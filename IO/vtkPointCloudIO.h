@@ -74,7 +74,9 @@ public:
   /**
    * Writes `data` in the format of `extension` (the file name's own when empty) to a temporary
    * file beside `fileName`, then renames it to `fileName`. Returns false and sets `error` (one
-   * line, starting with the file name) on any failure, leaving no file behind.
+   * line, starting with the file name) on any failure, leaving no file behind. Several threads
+   * may write at once, each its own data set (VTK's writers touch the information of their
+   * input's arrays, so one data set is not written by two threads at once).
    */
   static bool Write(vtkPointSet* data, const std::string& fileName, std::string& error,
     const std::string& extension = "", vtkCommand* observer = nullptr);
