@@ -4,6 +4,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointSet.h"
@@ -501,6 +502,9 @@ struct CreaseRun
   std::vector<int32_t> Scale;
   std::vector<double> Gain;
   double Variance = 0.0;
+  // Per point: the median distance to the lines that vote for it (the consensus distance to the
+  // crease, which no single noisy fit gives), -1 where none does. Set by CastVotes().
+  std::vector<float> Offset;
 
   CreaseRun(const featurepoints::PointReader& reader, const std::vector<vtkIdType>& ids,
     const std::vector<int32_t>& table, int k, int kfit, double d, vtkIdType n)
@@ -534,8 +538,8 @@ struct CreaseRun
   void ChooseScales(const float* normal, int smallest, unsigned char* detail);
   // The model of each fit (hinge or crossing planes) and its gain.
   void ChooseModels(float* gain, float* angle);
-  // Step 4: the vote fraction of every point.
-  void CastVotes(double minAngle, double bandWidth, float* vote) const;
+  // Step 4: the vote fraction of every point, and its Offset.
+  void CastVotes(double minAngle, double bandWidth, float* vote);
   // Step 6: hysteresis growth of the mask through points voting above growAt.
   vtkIdType Grow(const float* vote, double growAt, unsigned char* mask) const;
   // Open borders: an empty sector of the tangent plane. Sets border[id] and its outward
@@ -549,14 +553,18 @@ struct CreaseRun
   // FeatureType of the mask's points.
   void ClassifyFeatures(const unsigned char* mask, const unsigned char* border,
     const float* outward, const float* normal, int kc, unsigned char* type) const;
-  // One point wide: keeps, across each feature curve, the points nearest the fitted line
-  // (creases) or furthest out (borders).
-  vtkIdType Thin(const unsigned char* type, const float* outward, int kt, unsigned char* mask) const;
+  // One point wide: keeps the crease and corner points whose consensus distance to the crease
+  // (Offset) is within half their local spacing (of the ks nearest), widened by the noise, and
+  // across each border the outermost points (among their kt nearest).
+  vtkIdType Thin(
+    const unsigned char* type, const float* outward, int kt, int ks, unsigned char* mask) const;
 
 private:
   // The members of row r's sheet, nearest first, at most `count` of them besides the point,
   // as coordinates relative to the point (P[0] = 0) with their normals.
   void GatherSheet(vtkIdType r, int count, const float* normal, Scratch& s) const;
+  // The spacing of a uniform sampling as dense as row r's ks nearest: sqrt(pi r_ks^2 / ks).
+  double LocalSpacing(vtkIdType r, int ks) const;
   // Distance from a point at offset v of the fitted point to row r's line.
   double LineDistance(vtkIdType r, const double v[3]) const;
   // The crease direction of a feature point: its fit's line, or along its border.
@@ -765,11 +773,13 @@ double CreaseRun::LineDistance(vtkIdType r, const double v[3]) const
   return std::sqrt(std::max(w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - along * along, 0.0));
 }
 
-void CreaseRun::CastVotes(double minAngle, double bandWidth, float* vote) const
+void CreaseRun::CastVotes(double minAngle, double bandWidth, float* vote)
 {
   const double band = bandWidth * this->D;
   // One byte per point says whether its fit may vote, so that the vote reads only voters' fits.
   std::vector<unsigned char> voter(static_cast<size_t>(this->N), 0);
+  this->Offset.assign(static_cast<size_t>(this->N), -1.0f);
+  vtkSMPThreadLocal<std::vector<double>> scratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType r = begin; r < end; ++r)
     {
@@ -788,6 +798,8 @@ void CreaseRun::CastVotes(double minAngle, double bandWidth, float* vote) const
       this->Reader.Get(id, x);
       // The members of the point's sheet within its scale vote; the fraction is of them.
       const uint64_t* sheet = this->Sheet(r);
+      std::vector<double>& distances = scratch.Local();
+      distances.clear();
       int members = 0, in = 0;
       for (int j = -1; j < count && members <= this->Scale[r]; ++j)
       {
@@ -803,12 +815,20 @@ void CreaseRun::CastVotes(double minAngle, double bandWidth, float* vote) const
         }
         this->Reader.Get(other, y);
         const double v[3] = { x[0] - y[0], x[1] - y[1], x[2] - y[2] };
-        if (this->LineDistance(this->RowOf[other], v) <= band)
+        const double distance = this->LineDistance(this->RowOf[other], v);
+        if (distance <= band)
         {
           ++in;
+          distances.push_back(distance);
         }
       }
       vote[id] = static_cast<float>(in) / static_cast<float>(members);
+      if (!distances.empty())
+      {
+        const auto middle = distances.begin() + distances.size() / 2;
+        std::nth_element(distances.begin(), middle, distances.end());
+        this->Offset[id] = static_cast<float>(*middle);
+      }
     }
   });
 }
@@ -1089,7 +1109,7 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
 }
 
 vtkIdType CreaseRun::Thin(
-  const unsigned char* type, const float* outward, int kt, unsigned char* mask) const
+  const unsigned char* type, const float* outward, int kt, int ks, unsigned char* mask) const
 {
   std::vector<unsigned char> keep(static_cast<size_t>(this->N), 0);
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
@@ -1102,48 +1122,33 @@ vtkIdType CreaseRun::Thin(
         continue;
       }
       const int32_t* row = this->Row(r);
-      const int count = featurepoints::RowLength(row, std::min(kt, this->K));
       this->Reader.Get(id, x);
-      const bool isBorder = type[id] == vtkCreaseVotingFeatures::BORDER;
-      const CreaseLine& f = this->Fits[r].Hinge;
-      if (!isBorder && !f.HasLine)
+      if (type[id] != vtkCreaseVotingFeatures::BORDER)
       {
-        keep[id] = 1;
+        // Creases and corners: within half the local spacing of the crease, widened by the noise.
+        const double half = 0.5 * this->LocalSpacing(r, ks);
+        keep[id] = this->Offset[id] >= 0.0f &&
+            this->Offset[id] <= std::sqrt(half * half + this->Variance)
+          ? 1
+          : 0;
         continue;
       }
-      const double zero[3] = { 0.0, 0.0, 0.0 };
-      const double own = isBorder ? 0.0 : this->LineDistance(r, zero);
-      // Along a crease: its line's direction; across a border: the outward direction.
-      const float* t = f.LineDirection;
+      // Borders: the outermost, no border neighbour further out (more across than along).
+      const int count = featurepoints::RowLength(row, std::min(kt, this->K));
       const float* u = outward + 3 * id;
       bool kept = true;
       for (int j = 0; j < count && kept; ++j)
       {
         const vtkIdType other = row[j];
-        if (!mask[other] || (type[other] == vtkCreaseVotingFeatures::BORDER) != isBorder)
+        if (!mask[other] || type[other] != vtkCreaseVotingFeatures::BORDER)
         {
           continue;
         }
         this->Reader.Get(other, y);
         const double v[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
-        if (isBorder)
-        {
-          // A border neighbour further out, more across the border than along it.
-          const double out = v[0] * u[0] + v[1] * u[1] + v[2] * u[2];
-          const double length2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-          kept = !(out > 0.0 && out * out >= 0.5 * length2);
-        }
-        else
-        {
-          // A neighbour across the line (more across than along) that lies nearer to it.
-          const double along = v[0] * t[0] + v[1] * t[1] + v[2] * t[2];
-          const double length2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-          if (along * along <= 0.5 * length2)
-          {
-            const double theirs = this->LineDistance(r, v);
-            kept = !(theirs < own || (theirs == own && other < id));
-          }
-        }
+        const double out = v[0] * u[0] + v[1] * u[1] + v[2] * u[2];
+        const double length2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        kept = !(out > 0.0 && out * out >= 0.5 * length2);
       }
       keep[id] = kept ? 1 : 0;
     }
@@ -1156,6 +1161,20 @@ vtkIdType CreaseRun::Thin(
     count += keep[id];
   }
   return count;
+}
+
+double CreaseRun::LocalSpacing(vtkIdType r, int ks) const
+{
+  const int32_t* row = this->Row(r);
+  const int count = featurepoints::RowLength(row, std::min(ks, this->K));
+  if (count == 0)
+  {
+    return this->D;
+  }
+  double x[3], y[3];
+  this->Reader.Get(this->Ids[r], x);
+  this->Reader.Get(row[count - 1], y);
+  return std::sqrt(vtkMath::Pi() * vtkMath::Distance2BetweenPoints(x, y) / count);
 }
 } // namespace
 
@@ -1273,7 +1292,7 @@ int vtkCreaseVotingFeatures::RequestData(
   if (this->ThinFeatures)
   {
     this->BeginStage("thin");
-    this->NumberOfFeaturePoints = run.Thin(type, outward.data(), ConnectionNeighbors, m);
+    this->NumberOfFeaturePoints = run.Thin(type, outward.data(), ConnectionNeighbors, this->NormalNeighbors, m);
     for (vtkIdType id : ids)
     {
       type[id] = m[id] ? type[id] : 0;

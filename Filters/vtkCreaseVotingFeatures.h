@@ -69,9 +69,11 @@
  *    borders among the 50 nearest feature points spread (middle eigenvalue of the mean of t t^T
  *    above 0.18), else CONVEX or CONCAVE by the side of the line the fitted planes' centroids
  *    lie on, against the point's normal.
- * 9. ThinFeatures: across each crease line only the feature points nearest it (non-maximum
- *    suppression among the 8 nearest feature points lying more across the line than along it),
- *    across each border the outermost.
+ * 9. ThinFeatures: the crease and corner points whose consensus distance to the crease, the
+ *    median distance to the lines that vote for them (no single noisy fit places the line as
+ *    well), is within half their local spacing, widened by the noise: sqrt((s/2)^2 + sigma^2),
+ *    s = sqrt(pi r^2 / k) the spacing of a uniform sampling as dense as their NormalNeighbors
+ *    nearest (r: the distance to the furthest of them). Across each border the outermost.
  *
  * Output arrays: `CreaseVotes` (float, the score, 0-1), `CreaseGain` (float, G_i), `CreaseAngle`
  * (float, the angle between the two fitted planes in degrees, 0 when no line was found),
@@ -145,10 +147,11 @@ public:
 
   ///@{
   /**
-   * One point wide. Default off (the mask is a band about 2 BandWidth d wide). On: across each
-   * crease only the points nearest its fitted line are kept (non-maximum suppression among the
-   * 8 nearest feature points that lie more across the line than along it), across each border
-   * the outermost: the row of points nearest the edge, as labels that mark edges as lines do.
+   * One point wide. Default off (the mask is a band about 2 BandWidth d wide). On: only the
+   * crease and corner points within half a local spacing of the crease (by the median distance
+   * to the lines that vote for them, the band widened by the noise) are kept, and across each
+   * border the outermost: the row of points nearest the edge, as labels that mark edges as
+   * lines do (step 9 above).
    */
   vtkSetMacro(ThinFeatures, bool);
   vtkGetMacro(ThinFeatures, bool);

@@ -322,8 +322,9 @@ const std::vector<FilterOption>& FilterOptions()
     { "thin", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
       [](vtkFeaturePointDetector* f, double) { Crease(f)->ThinFeaturesOn(); },
       [](vtkFeaturePointDetector* f) { return double(Crease(f)->GetThinFeatures()); },
-      "one point wide: across each crease only the points nearest its fitted line, across each "
-      "border the outermost row (without it, a band about twice --band-width spacings wide)",
+      "one point wide: only the points within half a spacing of each crease (widened by the "
+      "noise), across each border the outermost row (without it, a band about twice "
+      "--band-width spacings wide)",
       true },
     { "no-borders", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
       [](vtkFeaturePointDetector* f, double) { Crease(f)->BordersOff(); },
