@@ -37,9 +37,12 @@
  * 2b. Scale per point (MultiScale). Where neither the quadric, the hinge nor the crossing planes
  *    explain the k nearest within twice sigma^2 per degree of freedom (two creases, a groove, a
  *    small face in view), the neighbourhood is halved (k/2, k/4, not below 20 points) until one
- *    does; that point's fit and vote use that many neighbours. Where none explains even the
- *    smallest within 3 sigma^2 (a corner, faces narrower than the smallest scale) the point is a
- *    feature point.
+ *    does; that point's fit and vote use that many neighbours. Where none does at any scale, the
+ *    largest scale whose curved hinge explains them (each side of the hinge's line its own
+ *    quadric, turning by at most a radian over the side's radius: a crease between curved
+ *    faces, such as a cylinder's rim, which two planes fit only within the faces' curvature and
+ *    never within a clean cloud's noise). Where nothing explains even the smallest within
+ *    3 sigma^2 (a corner, faces narrower than the smallest scale) the point is a feature point.
  * 3. Crease line of the fit: the intersection of the two planes (when they are not parallel).
  * 4. Vote. A point j of P_i's neighbourhood (P_i included) votes for P_i when its two planes
  *    fit better than one (gain above 1), meet at MinimumAngle or more, and its crease line
