@@ -43,19 +43,19 @@ constexpr size_t OffsetToPointDataAt = 96;
 constexpr size_t PointFormatAt = 104;
 constexpr size_t RecordLengthAt = 105;
 constexpr size_t LegacyPointCountAt = 107;
-constexpr size_t ScaleAt = 131;  // x, y, z: 3 doubles
-constexpr size_t OffsetAt = 155; // x, y, z: 3 doubles
+constexpr size_t ScaleAt = 131;      // x, y, z: 3 doubles
+constexpr size_t OffsetAt = 155;     // x, y, z: 3 doubles
 constexpr size_t PointCountAt = 247; // LAS 1.4: unsigned 64-bit
 constexpr size_t HeaderSize12 = 227, HeaderSize13 = 235, HeaderSize14 = 375;
 
 // What a point data record format holds and where (bytes from the start of the record).
 struct RecordLayout
 {
-  size_t Size;  // the standard record length; longer records hold extra bytes
+  size_t Size;   // the standard record length; longer records hold extra bytes
   bool Extended; // formats 6-10: 4-bit return numbers, a whole byte of classification
-  int GpsTime;  // -1: none
-  int Colour;   // -1: none
-  int Nir;      // -1: none
+  int GpsTime;   // -1: none
+  int Colour;    // -1: none
+  int Nir;       // -1: none
 };
 
 const RecordLayout Layouts[11] = {
@@ -219,8 +219,7 @@ int vtkPointCloudLASReader::RequestData(
       " (1.0 to 1.4 are read)");
   }
   const unsigned headerSize = Load<uint16_t>(header + HeaderSizeAt, swap);
-  const size_t leastHeader =
-    minor >= 4 ? HeaderSize14 : (minor == 3 ? HeaderSize13 : HeaderSize12);
+  const size_t leastHeader = minor >= 4 ? HeaderSize14 : (minor == 3 ? HeaderSize13 : HeaderSize12);
   if (headerSize < leastHeader || headerSize > fileSize)
   {
     return bad("header size " + std::to_string(headerSize) + " is impossible for LAS " +
@@ -243,8 +242,8 @@ int vtkPointCloudLASReader::RequestData(
   const int format = formatByte;
   if (format > 10)
   {
-    return bad("unsupported point data record format " + std::to_string(format) +
-      " (0 to 10 are read)");
+    return bad(
+      "unsupported point data record format " + std::to_string(format) + " (0 to 10 are read)");
   }
   const RecordLayout& layout = Layouts[format];
   const size_t recordLength = Load<uint16_t>(header + RecordLengthAt, swap);
@@ -310,8 +309,7 @@ int vtkPointCloudLASReader::RequestData(
 
   stream.clear();
   stream.seekg(static_cast<std::streamoff>(pointOffset));
-  const vtkIdType perChunk =
-    static_cast<vtkIdType>(std::max<size_t>(1, ChunkBytes / recordLength));
+  const vtkIdType perChunk = static_cast<vtkIdType>(std::max<size_t>(1, ChunkBytes / recordLength));
   std::vector<char> chunk(static_cast<size_t>(std::min(n, perChunk)) * recordLength);
   double* xyz = static_cast<double*>(points->GetVoidPointer(0));
   for (vtkIdType first = 0; first < n; first += perChunk)
@@ -329,8 +327,8 @@ int vtkPointCloudLASReader::RequestData(
     {
       for (int c = 0; c < 3; ++c)
       {
-        xyz[3 * i + c] = static_cast<double>(Load<int32_t>(record + 4 * c, swap)) * scale[c] +
-          offset[c];
+        xyz[3 * i + c] =
+          static_cast<double>(Load<int32_t>(record + 4 * c, swap)) * scale[c] + offset[c];
       }
       intensity->SetValue(i, Load<uint16_t>(record + 12, swap));
       const unsigned char bits = static_cast<unsigned char>(record[14]);

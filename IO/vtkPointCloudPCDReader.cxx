@@ -157,8 +157,8 @@ std::string ParseValue(std::string_view token, T& value)
     auto f = std::from_chars(first, last, d);
     if (f.ec == std::errc() && f.ptr == last)
     {
-      return quoted + " is not " + (std::is_signed<T>::value || d >= 0 ? "an integer" : "unsigned") +
-        " (type " + type + ")";
+      return quoted + " is not " +
+        (std::is_signed<T>::value || d >= 0 ? "an integer" : "unsigned") + " (type " + type + ")";
     }
     return quoted + " is not a number";
   }
@@ -379,8 +379,8 @@ bool PCDParser::ReadHeader()
         return this->Fail(
           "header line longer than " + std::to_string(MaxHeaderLine) + " bytes", this->Line + 1);
       }
-      return this->Fail(first ? std::string("empty file, not a PCD file")
-                              : "the header ends without a DATA line");
+      return this->Fail(
+        first ? std::string("empty file, not a PCD file") : "the header ends without a DATA line");
     }
     ++this->Line;
     Split(line, w);
@@ -436,8 +436,9 @@ bool PCDParser::ReadHeader()
     }
     else if (keyword == "SIZE" || keyword == "TYPE" || keyword == "COUNT")
     {
-      std::vector<std::string>& values =
-        keyword == "SIZE" ? this->Sizes : keyword == "TYPE" ? this->Types : this->Counts;
+      std::vector<std::string>& values = keyword == "SIZE" ? this->Sizes
+        : keyword == "TYPE"                                ? this->Types
+                                                           : this->Counts;
       for (size_t i = 1; i < w.size(); ++i)
       {
         values.emplace_back(w[i]);
@@ -451,10 +452,12 @@ bool PCDParser::ReadHeader()
         return bad("malformed " + keyword + " line (expected \"" + keyword +
           " N\", N a non-negative integer)");
       }
-      (keyword == "WIDTH" ? this->Width : keyword == "HEIGHT" ? this->Height : this->Points) =
-        value;
-      (keyword == "WIDTH" ? this->HasWidth : keyword == "HEIGHT" ? this->HasHeight
-                                                                 : this->HasPoints) = true;
+      (keyword == "WIDTH"       ? this->Width
+          : keyword == "HEIGHT" ? this->Height
+                                : this->Points) = value;
+      (keyword == "WIDTH"       ? this->HasWidth
+          : keyword == "HEIGHT" ? this->HasHeight
+                                : this->HasPoints) = true;
     }
     else if (keyword == "DATA")
     {
@@ -477,8 +480,8 @@ bool PCDParser::ReadHeader()
       }
       else
       {
-        return bad("unknown DATA encoding " + quote(w[1]) +
-          " (ascii, binary or binary_compressed)");
+        return bad(
+          "unknown DATA encoding " + quote(w[1]) + " (ascii, binary or binary_compressed)");
       }
       return true;
     }
@@ -522,20 +525,19 @@ bool PCDParser::CheckHeader()
     uint64_t size = 0;
     if (!ParseCount(this->Sizes[i], size) || size > 8)
     {
-      return this->Fail("field '" + f.Name + "': SIZE " + this->Sizes[i].substr(0, 32) +
-          " is not 1, 2, 4 or 8",
+      return this->Fail(
+        "field '" + f.Name + "': SIZE " + this->Sizes[i].substr(0, 32) + " is not 1, 2, 4 or 8",
         lineOf("SIZE"));
     }
     const std::string& letter = this->Types[i];
-    if (letter.size() != 1 ||
-      !TypeFromLetter(letter[0], static_cast<int>(size), f.Type))
+    if (letter.size() != 1 || !TypeFromLetter(letter[0], static_cast<int>(size), f.Type))
     {
       return this->Fail("field '" + f.Name + "': unknown type " + letter.substr(0, 32) +
           " of size " + std::to_string(size) + " (I and U of 1, 2, 4, 8 bytes, F of 4, 8)",
         lineOf("TYPE"));
     }
-    if (!this->Counts.empty() && (!ParseCount(this->Counts[i], f.Count) || f.Count == 0 ||
-                                   f.Count > MaxValuesPerPoint))
+    if (!this->Counts.empty() &&
+      (!ParseCount(this->Counts[i], f.Count) || f.Count == 0 || f.Count > MaxValuesPerPoint))
     {
       return this->Fail("field '" + f.Name + "': COUNT " + this->Counts[i].substr(0, 32) +
           " is not an integer from 1 to " + std::to_string(MaxValuesPerPoint),
@@ -560,8 +562,8 @@ bool PCDParser::CheckHeader()
     }
     if (f->Count != 1)
     {
-      return this->Fail(std::string("field ") + axis + " has COUNT " + std::to_string(f->Count) +
-        ", 1 expected");
+      return this->Fail(
+        std::string("field ") + axis + " has COUNT " + std::to_string(f->Count) + ", 1 expected");
     }
   }
   // POINTS is WIDTH x HEIGHT; either says the number of points when the other is missing.
@@ -739,8 +741,8 @@ bool PCDParser::Prepare(vtkPolyData* output, bool decodeColors)
 // Decodes field `field` of points [first, first + count): the field's first value of point
 // `first` is at base, the next point's `stride` bytes further, the next value of a point
 // `fieldStep` bytes further.
-void PCDParser::Decode(const char* base, size_t stride, size_t fieldStep, vtkIdType first,
-  vtkIdType count, size_t field)
+void PCDParser::Decode(
+  const char* base, size_t stride, size_t fieldStep, vtkIdType first, vtkIdType count, size_t field)
 {
   const Field& f = this->Fields[field];
   const Target& t = this->Targets[field];
@@ -884,8 +886,8 @@ bool PCDParser::ReadCompressed()
       " bytes from byte " + std::to_string(start) + ")");
   }
   std::vector<char> data(uncompressed);
-  const unsigned int got = lzf_decompress(
-    packed.data(), compressed, data.data(), static_cast<unsigned int>(uncompressed));
+  const unsigned int got =
+    lzf_decompress(packed.data(), compressed, data.data(), static_cast<unsigned int>(uncompressed));
   if (got != uncompressed)
   {
     return this->Fail("the compressed data is corrupt (LZF decompression gave " +
@@ -944,7 +946,8 @@ bool PCDParser::ReadAscii()
       const std::string which = "point " + std::to_string(p + 1) + " of " + std::to_string(n);
       if (tokens.size() != this->ValuesPerPoint)
       {
-        return this->Fail(std::string(tokens.size() < this->ValuesPerPoint ? "too few" : "too many") +
+        return this->Fail(
+          std::string(tokens.size() < this->ValuesPerPoint ? "too few" : "too many") +
             " values for " + which + " (" + std::to_string(tokens.size()) + ", " +
             std::to_string(this->ValuesPerPoint) + " expected)",
           this->Line);
@@ -953,6 +956,11 @@ bool PCDParser::ReadAscii()
       size_t next = 0;
       for (const Field& f : this->Fields)
       {
+        if (f.Name == "_")
+        {
+          next += static_cast<size_t>(f.Count); // padding: its values are not read, as PCL does
+          continue;
+        }
         const size_t size = TypeSize(f.Type);
         const bool packedColour =
           f.Type == PcdType::Float32 && (f.Name == "rgb" || f.Name == "rgba");
@@ -962,9 +970,9 @@ bool PCDParser::ReadAscii()
           char* dst = row + f.Offset + k * size;
           std::string problem;
           uint32_t bits = 0;
-          if (packedColour && std::all_of(token.begin(), token.end(), [](char c) {
-                return c >= '0' && c <= '9';
-              }) && ParseValue(token, bits).empty())
+          if (packedColour &&
+            std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
+            ParseValue(token, bits).empty())
           {
             // PCL writes a packed colour as the integer of its bits.
             std::memcpy(dst, &bits, 4);
@@ -1072,8 +1080,7 @@ bool PCDParser::Read(vtkPolyData* output, bool decodeColors, bool createVertexCe
   {
     return this->FailEnd(remaining / this->RowSize,
       "binary data of " + std::to_string(this->RowSize) + "-byte points from byte " +
-        std::to_string(start) + ", the file has " + std::to_string(this->In.FileSize()) +
-        " bytes");
+        std::to_string(start) + ", the file has " + std::to_string(this->In.FileSize()) + " bytes");
   }
   if (this->Data == Encoding::Ascii && this->Points > 0)
   {
@@ -1083,16 +1090,15 @@ bool PCDParser::Read(vtkPolyData* output, bool decodeColors, bool createVertexCe
     if (this->Points > most)
     {
       return this->Fail("the header declares " + std::to_string(this->Points) +
-        " points, but the " + std::to_string(remaining) + " bytes of ASCII data after it can hold " +
-        "at most " + std::to_string(most) + " (of " + std::to_string(this->ValuesPerPoint) +
-        " values each)");
+        " points, but the " + std::to_string(remaining) +
+        " bytes of ASCII data after it can hold " + "at most " + std::to_string(most) + " (of " +
+        std::to_string(this->ValuesPerPoint) + " values each)");
     }
   }
   if (this->Data == Encoding::Compressed &&
     this->Points > std::numeric_limits<uint32_t>::max() / this->RowSize)
   {
-    return this->Fail(std::to_string(this->Points) + " points of " +
-      std::to_string(this->RowSize) +
+    return this->Fail(std::to_string(this->Points) + " points of " + std::to_string(this->RowSize) +
       " bytes do not fit in binary_compressed data (at most 4 GiB uncompressed)");
   }
   if (this->Data == Encoding::Compressed && !this->ReadCompressedSizes())
@@ -1104,7 +1110,7 @@ bool PCDParser::Read(vtkPolyData* output, bool decodeColors, bool createVertexCe
     return false;
   }
   const bool ok = this->Data == Encoding::Ascii ? this->ReadAscii()
-    : this->Data == Encoding::Binary           ? this->ReadBinary()
+    : this->Data == Encoding::Binary            ? this->ReadBinary()
                                                 : this->ReadCompressed();
   if (!ok || !this->RemoveInvalidPoints(output))
   {

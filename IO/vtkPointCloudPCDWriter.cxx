@@ -135,8 +135,8 @@ void EncodeColumn(
       auto channel = [&](int k) {
         return static_cast<uint32_t>(static_cast<unsigned char>(c.Array->GetComponent(i, k)));
       };
-      const uint32_t packed = (alpha ? channel(3) << 24 : 0u) | channel(0) << 16 |
-        channel(1) << 8 | channel(2);
+      const uint32_t packed =
+        (alpha ? channel(3) << 24 : 0u) | channel(0) << 16 | channel(1) << 8 | channel(2);
       std::memcpy(out, &packed, 4);
     }
     return;
@@ -277,8 +277,7 @@ void vtkPointCloudPCDWriter::WriteData()
   }
 
   // Names the reader gives a meaning to stay with their arrays; other clashes get a suffix.
-  std::set<std::string> used = { "x", "y", "z", "normal_x", "normal_y", "normal_z", "rgb",
-    "rgba" };
+  std::set<std::string> used = { "x", "y", "z", "normal_x", "normal_y", "normal_z", "rgb", "rgba" };
   for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
   {
     vtkAbstractArray* abstract = pd->GetAbstractArray(i);
@@ -393,8 +392,8 @@ void vtkPointCloudPCDWriter::WriteData()
         {
           SwapValues(reinterpret_cast<char*>(sizes2), 2, 4);
         }
-        ok = std::fwrite(sizes2, 1, 8, file) == 8 &&
-          std::fwrite(packed.data(), 1, size, file) == size;
+        ok =
+          std::fwrite(sizes2, 1, 8, file) == 8 && std::fwrite(packed.data(), 1, size, file) == size;
       }
     }
   }
@@ -410,9 +409,9 @@ void vtkPointCloudPCDWriter::WriteData()
       valuesPerRow += static_cast<size_t>(c.Count);
     }
     std::vector<char> packed(static_cast<size_t>(std::min(n, rowsPerChunk)) * rowSize);
-    std::vector<char> text(
-      ascii ? static_cast<size_t>(std::min(n, rowsPerChunk)) * (valuesPerRow * MaxValueChars + 1)
-            : 0);
+    std::vector<char> text(ascii
+        ? static_cast<size_t>(std::min(n, rowsPerChunk)) * (valuesPerRow * MaxValueChars + 1)
+        : 0);
     for (vtkIdType begin = 0; ok && begin < n; begin += rowsPerChunk)
     {
       const vtkIdType end = std::min(n, begin + rowsPerChunk);

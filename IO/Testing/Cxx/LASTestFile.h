@@ -47,8 +47,8 @@ struct File
 {
   int Minor = 2;
   int Format = 0;
-  int ExtraBytes = 0;    // after each standard record
-  bool Vlr = false;      // one variable-length record between header and points
+  int ExtraBytes = 0; // after each standard record
+  bool Vlr = false;   // one variable-length record between header and points
   double Scale[3] = { 0.01, 0.01, 0.01 };
   double Offset[3] = { 0, 0, 0 };
   uint64_t DeclaredPoints = ~uint64_t(0); // the header's count (default: the points')
@@ -84,8 +84,8 @@ inline std::string Record(const Point& p, int format)
   Put<int32_t>(out, p.Z);
   Put<uint16_t>(out, p.Intensity);
   const bool gps = format == 1 || format >= 3;
-  const bool rgb = format == 2 || format == 3 || format == 5 || format == 7 || format == 8 ||
-    format == 10;
+  const bool rgb =
+    format == 2 || format == 3 || format == 5 || format == 7 || format == 8 || format == 10;
   if (format <= 5)
   {
     // return number (3 bits), number of returns (3 bits), scan direction, edge of flight line
@@ -147,31 +147,31 @@ inline std::string Bytes(const File& f)
   std::string vlr;
   if (f.Vlr)
   {
-    Put<uint16_t>(vlr, 0);                // reserved
-    PutText(vlr, "LASF_Projection", 16);  // user ID
-    Put<uint16_t>(vlr, 2112);             // record ID (OGC WKT)
-    Put<uint16_t>(vlr, 10);               // record length after header
-    PutText(vlr, "a WKT stand-in", 32);   // description
-    PutText(vlr, "LOCAL_CS[]", 10);       // the record itself
+    Put<uint16_t>(vlr, 0);               // reserved
+    PutText(vlr, "LASF_Projection", 16); // user ID
+    Put<uint16_t>(vlr, 2112);            // record ID (OGC WKT)
+    Put<uint16_t>(vlr, 10);              // record length after header
+    PutText(vlr, "a WKT stand-in", 32);  // description
+    PutText(vlr, "LOCAL_CS[]", 10);      // the record itself
   }
   const uint64_t count = f.DeclaredPoints != ~uint64_t(0) ? f.DeclaredPoints : f.Points.size();
   std::string h;
   PutText(h, "LASF", 4);
-  Put<uint16_t>(h, 7);  // file source ID
+  Put<uint16_t>(h, 7);                       // file source ID
   Put<uint16_t>(h, f.Minor >= 4 ? 0x11 : 0); // global encoding
-  Put<uint32_t>(h, 0);  // project ID GUID data 1
-  Put<uint16_t>(h, 0);  // data 2
-  Put<uint16_t>(h, 0);  // data 3
-  PutText(h, "", 8);    // data 4
-  Put<uint8_t>(h, 1);   // version major
+  Put<uint32_t>(h, 0);                       // project ID GUID data 1
+  Put<uint16_t>(h, 0);                       // data 2
+  Put<uint16_t>(h, 0);                       // data 3
+  PutText(h, "", 8);                         // data 4
+  Put<uint8_t>(h, 1);                        // version major
   Put<uint8_t>(h, static_cast<uint8_t>(f.Minor));
   PutText(h, "FeaturePoints test", 32); // system identifier
   PutText(h, "byte by byte", 32);       // generating software
-  Put<uint16_t>(h, 123);  // creation day of year
-  Put<uint16_t>(h, 2024); // creation year
+  Put<uint16_t>(h, 123);                // creation day of year
+  Put<uint16_t>(h, 2024);               // creation year
   Put<uint16_t>(h, static_cast<uint16_t>(f.HeaderSize >= 0 ? f.HeaderSize : headerSize));
   Put<uint32_t>(h, static_cast<uint32_t>(headerSize + vlr.size())); // offset to point data
-  Put<uint32_t>(h, f.Vlr ? 1 : 0);                                   // number of VLRs
+  Put<uint32_t>(h, f.Vlr ? 1 : 0);                                  // number of VLRs
   Put<uint8_t>(h, static_cast<uint8_t>(f.FormatByte >= 0 ? f.FormatByte : f.Format));
   Put<uint16_t>(h, static_cast<uint16_t>(f.RecordLength >= 0 ? f.RecordLength : recordLength));
   // legacy number of point records: 0 in LAS 1.4 for formats 6-10, as the specification asks

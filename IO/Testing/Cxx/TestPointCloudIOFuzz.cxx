@@ -8,11 +8,11 @@
 // case is kept in the test's folder (fuzz-failure-N.EXT) to reproduce it.
 //
 //   FeaturePointsIOCxxTests TestPointCloudIOFuzz FOLDER [CASES_PER_SEED]
+#include "LASTestFile.h"
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
-#include "LASTestFile.h"
 #include "vtkPointCloudIO.h"
 #include "vtkPointCloudPCDWriter.h"
 #include "vtkPointData.h"
@@ -232,8 +232,7 @@ std::vector<Seed> Seeds(const std::string& folder)
     }
     else
     {
-      organized << x[0] << " " << x[1] << " " << x[2] << " " << 65536 * i + 255 << " " << i
-                << "\n";
+      organized << x[0] << " " << x[1] << " " << x[2] << " " << 65536 * i + 255 << " " << i << "\n";
     }
   }
   seeds.push_back({ "pcd", organized.str(), NewFormatWeight });

@@ -3,8 +3,8 @@
 // formats 0 to 10, extra bytes): every attribute read back, coordinates at 10^6 with scale 0.001
 // to 1e-9; LAZ refused with its one line; malformed files (lying counts and sizes) refused with
 // one line naming the file, before any allocation.
-#include "vtkPointCloudLASReader.h"
 #include "LASTestFile.h"
+#include "vtkPointCloudLASReader.h"
 
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -141,8 +141,8 @@ void Formats()
         continue;
       }
       const bool gps = format == 1 || format >= 3;
-      const bool rgb = format == 2 || format == 3 || format == 5 || format == 7 || format == 8 ||
-        format == 10;
+      const bool rgb =
+        format == 2 || format == 3 || format == 5 || format == 7 || format == 8 || format == 10;
       const bool nir = format == 8 || format == 10;
       vtkPointData* pd = c->GetPointData();
       LAS_CHECK(pd->GetNumberOfArrays() == 4 + gps + rgb + nir, "%s: %d arrays", name.c_str(),
@@ -168,8 +168,8 @@ void Formats()
         };
         LAS_CHECK(value("Intensity") == p.Intensity, "%s: Intensity %lld", name.c_str(),
           static_cast<long long>(i));
-        LAS_CHECK(value("ReturnNumber") == p.ReturnNumber &&
-            value("NumberOfReturns") == p.NumberOfReturns,
+        LAS_CHECK(
+          value("ReturnNumber") == p.ReturnNumber && value("NumberOfReturns") == p.NumberOfReturns,
           "%s: returns of %lld: %g of %g", name.c_str(), static_cast<long long>(i),
           value("ReturnNumber"), value("NumberOfReturns"));
         // Formats 0-5: the class without its flags (set in every record written here).
@@ -182,8 +182,8 @@ void Formats()
         }
         if (rgb)
         {
-          LAS_CHECK(value("RGB", 0) == p.Red && value("RGB", 1) == p.Green &&
-              value("RGB", 2) == p.Blue,
+          LAS_CHECK(
+            value("RGB", 0) == p.Red && value("RGB", 1) == p.Green && value("RGB", 2) == p.Blue,
             "%s: RGB %lld", name.c_str(), static_cast<long long>(i));
         }
         if (nir)
@@ -211,8 +211,8 @@ void Precision()
   const std::string path = PathOf("precision-1.4.las");
   WriteBytes(path, Bytes(f));
   ReadResult r = Read(path);
-  LAS_CHECK(r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 3, "precision: %s",
-    r.Message.c_str());
+  LAS_CHECK(
+    r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 3, "precision: %s", r.Message.c_str());
   if (r.Cloud->GetNumberOfPoints() != 3)
   {
     return;
@@ -238,8 +238,8 @@ void Precision()
   {
     io->GetPoint(1, x);
   }
-  LAS_CHECK(io && io->GetPoints()->GetDataType() == VTK_DOUBLE &&
-      std::fabs(x[0] - 1000000.001) <= 1e-9,
+  LAS_CHECK(
+    io && io->GetPoints()->GetDataType() == VTK_DOUBLE && std::fabs(x[0] - 1000000.001) <= 1e-9,
     "precision through vtkPointCloudIO: %s", error.c_str());
 }
 
@@ -265,8 +265,8 @@ void Compressed()
   const std::string marked = PathOf("laszip-marked.las");
   WriteBytes(marked, Bytes(f));
   r = Read(marked);
-  LAS_CHECK(r.Message.find(marked + ": " + expected) == 0, "compression bit: [%s]",
-    r.Message.c_str());
+  LAS_CHECK(
+    r.Message.find(marked + ": " + expected) == 0, "compression bit: [%s]", r.Message.c_str());
 }
 
 // Malformed files: one line naming the file and the problem, an empty output, no allocation of
@@ -293,7 +293,8 @@ void Malformed()
   std::string version2 = good;
   version2[24] = 2;
   const Case cases[] = {
-    { "signature.las", wrongSignature, "not a LAS file (it does not start with the signature LASF)" },
+    { "signature.las", wrongSignature,
+      "not a LAS file (it does not start with the signature LASF)" },
     { "tiny.las", "LASF", "the file ends in the LAS header (227 bytes at least, the file has 4)" },
     { "version.las", version2, "unsupported LAS version 2.2 (1.0 to 1.4 are read)" },
     { "format11.las", with([](File& f) { f.FormatByte = 11; }),
@@ -307,11 +308,10 @@ void Malformed()
     { "scale-huge.las", with([](File& f) { f.Scale[0] = 1e300; }), "overflow double precision" },
     { "count-lie.las", with([](File& f) { f.DeclaredPoints = 4; }),
       "the header declares 4 points of 28 bytes from byte 227, but the file (311 bytes) holds 3" },
-    { "count-huge.las",
-      with([](File& f) {
-        f.Minor = 4;
-        f.DeclaredPoints = uint64_t(1) << 50;
-      }),
+    { "count-huge.las", with([](File& f) {
+       f.Minor = 4;
+       f.DeclaredPoints = uint64_t(1) << 50;
+     }),
       "the header declares 1125899906842624 points" },
     { "cut.las", good.substr(0, good.size() - 1), "the file (310 bytes) holds 2" },
   };

@@ -139,7 +139,7 @@ void KnownAscii()
     "VIEWPOINT 0 0 0 1 0 0 0\n"
     "POINTS 3\n"
     "DATA ascii\n"
-    "1.5 -2 3.25 16711935 0.5 7 1 -2 3 0\n"
+    "1.5 -2 3.25 16711935 0.5 7 1 -2 3 pad\n" // padding values are not read (as in PCL)
     "\n"
     "0 0 1e-3 4278255360 nan 65535 -128 0 127 9\r\n"
     "-1.25e2 +4 5 255 -0.125 0 5 6 7 1");
@@ -157,8 +157,8 @@ void KnownAscii()
   c->GetPoint(0, x);
   PCD_CHECK(x[0] == 1.5 && x[1] == -2 && x[2] == 3.25, "point 0: %g %g %g", x[0], x[1], x[2]);
   c->GetPoint(1, x);
-  PCD_CHECK(x[0] == 0 && x[1] == 0 && x[2] == static_cast<double>(1e-3f), "point 1: %g %g %g",
-    x[0], x[1], x[2]);
+  PCD_CHECK(x[0] == 0 && x[1] == 0 && x[2] == static_cast<double>(1e-3f), "point 1: %g %g %g", x[0],
+    x[1], x[2]);
   c->GetPoint(2, x);
   PCD_CHECK(x[0] == -125 && x[1] == 4 && x[2] == 5, "point 2: %g %g %g", x[0], x[1], x[2]);
   auto* rgb = vtkUnsignedCharArray::SafeDownCast(c->GetPointData()->GetArray("RGB"));
@@ -292,8 +292,7 @@ void KnownCompressed()
   };
   const std::string one = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH ";
   const Case cases[] = {
-    { "lying-uncompressed.pcd",
-      header + Bytes(uint32_t(lzf.size())) + Bytes(uint32_t(36)) + lzf,
+    { "lying-uncompressed.pcd", header + Bytes(uint32_t(lzf.size())) + Bytes(uint32_t(36)) + lzf,
       "the compressed data declares 36 bytes, but 2 points of 12 bytes are 24" },
     { "long-compressed.pcd", header + Bytes(uint32_t(1000)) + Bytes(uint32_t(24)) + lzf,
       "the file ends in the compressed data (1000 bytes" },
@@ -343,8 +342,8 @@ void Organized()
     "organized: %lld points, %lld skipped, %lld x %lld: %s",
     static_cast<long long>(r.Cloud->GetNumberOfPoints()), static_cast<long long>(r.Skipped),
     static_cast<long long>(r.Width), static_cast<long long>(r.Height), r.Message.c_str());
-  PCD_CHECK(r.Warnings.size() == 1 &&
-      r.Warnings[0].find("2 of 6 points skipped") != std::string::npos,
+  PCD_CHECK(
+    r.Warnings.size() == 1 && r.Warnings[0].find("2 of 6 points skipped") != std::string::npos,
     "organized: one warning with the count");
   const double kept[4] = { 10, 12, 14, 15 };
   for (int i = 0; i < 4 && r.Cloud->GetNumberOfPoints() == 4; ++i)
@@ -355,8 +354,8 @@ void Organized()
   // Through vtkPointCloudIO: a cloud without the invalid points, no error.
   std::string error;
   vtkSmartPointer<vtkPointSet> io = vtkPointCloudIO::Read(path, error);
-  PCD_CHECK(io && io->GetNumberOfPoints() == 4, "organized through vtkPointCloudIO: %s",
-    error.c_str());
+  PCD_CHECK(
+    io && io->GetNumberOfPoints() == 4, "organized through vtkPointCloudIO: %s", error.c_str());
 }
 
 vtkSmartPointer<vtkPolyData> RandomCloud(vtkIdType n, bool doublePoints)
@@ -441,8 +440,8 @@ void RoundTrips()
       ReadResult r = Read(path);
       PCD_CHECK(r.Errors.empty(), "read %s: %s", path.c_str(), r.Message.c_str());
       vtkPolyData* back = r.Cloud;
-      PCD_CHECK(back->GetNumberOfPoints() == cloud->GetNumberOfPoints(), "%s: points",
-        path.c_str());
+      PCD_CHECK(
+        back->GetNumberOfPoints() == cloud->GetNumberOfPoints(), "%s: points", path.c_str());
       PCD_CHECK(back->GetPoints()->GetDataType() == (doublePoints ? VTK_DOUBLE : VTK_FLOAT),
         "%s: point type", path.c_str());
       if (back->GetNumberOfPoints() != cloud->GetNumberOfPoints())
@@ -457,8 +456,8 @@ void RoundTrips()
         back->GetPoint(i, b);
         differences += a[0] != b[0] || a[1] != b[1] || a[2] != b[2];
       }
-      for (const char* array : { "Normals", "RGB", "RGBA", "vtkOriginalPointIds", "two_words",
-             "label" })
+      for (const char* array :
+        { "Normals", "RGB", "RGBA", "vtkOriginalPointIds", "two_words", "label" })
       {
         vtkDataArray* original =
           cloud->GetPointData()->GetArray(std::string(array) == "two_words" ? "two words" : array);
@@ -479,10 +478,12 @@ void RoundTrips()
             read->GetComponent(i / k, static_cast<int>(i % k));
         }
       }
-      auto* ids = vtkIdTypeArray::SafeDownCast(cloud->GetPointData()->GetArray("vtkOriginalPointIds"));
+      auto* ids =
+        vtkIdTypeArray::SafeDownCast(cloud->GetPointData()->GetArray("vtkOriginalPointIds"));
       vtkDataArray* readIds = back->GetPointData()->GetArray("vtkOriginalPointIds");
-      PCD_CHECK(readIds && static_cast<long long>(readIds->GetComponent(2999, 0)) ==
-          static_cast<long long>(ids->GetValue(2999)),
+      PCD_CHECK(readIds &&
+          static_cast<long long>(readIds->GetComponent(2999, 0)) ==
+            static_cast<long long>(ids->GetValue(2999)),
         "%s: 64-bit ids exact", path.c_str());
       PCD_CHECK(differences == 0, "%s: %ld values differ", path.c_str(), differences);
     }
@@ -501,19 +502,18 @@ void RoundTrips()
     writer->SetDataFormat(format);
     writer->Write();
     ReadResult r = Read(path);
-    PCD_CHECK(r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 0, "empty %s: %s",
-      names[format], r.Message.c_str());
+    PCD_CHECK(r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 0, "empty %s: %s", names[format],
+      r.Message.c_str());
   }
 
   // Through vtkPointCloudIO: .pcd is written binary, with the feature arrays as fields.
   vtkSmartPointer<vtkPolyData> cloud = RandomCloud(500, false);
   std::string error;
   const std::string path = PathOf("through-io.pcd");
-  PCD_CHECK(vtkPointCloudIO::Write(cloud, path, error), "vtkPointCloudIO::Write: %s",
-    error.c_str());
+  PCD_CHECK(
+    vtkPointCloudIO::Write(cloud, path, error), "vtkPointCloudIO::Write: %s", error.c_str());
   vtkSmartPointer<vtkPointSet> back = vtkPointCloudIO::Read(path, error);
-  PCD_CHECK(back && back->GetNumberOfPoints() == 500 &&
-      back->GetPointData()->GetArray("label") &&
+  PCD_CHECK(back && back->GetNumberOfPoints() == 500 && back->GetPointData()->GetArray("label") &&
       back->GetPointData()->GetArray("label")->GetComponent(499, 0) == 399,
     "vtkPointCloudIO::Read: %s", error.c_str());
 }
@@ -545,7 +545,8 @@ void Malformed()
     { "no-z.pcd",
       "VERSION 0.7\nFIELDS x y w\nSIZE 4 4 4\nTYPE F F F\nWIDTH 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
       "no z field" },
-    { "huge-binary.pcd", xyz + "WIDTH 1000000000000\nHEIGHT 1\nPOINTS 1000000000000\nDATA binary\n" +
+    { "huge-binary.pcd",
+      xyz + "WIDTH 1000000000000\nHEIGHT 1\nPOINTS 1000000000000\nDATA binary\n" +
         std::string(120, '\0'),
       "the file ends in point 11 of 1000000000000" },
     { "huge-ascii.pcd", xyz + "WIDTH 4000000000\nPOINTS 4000000000\nDATA ascii\n1 2 3\n4 5 6\n",
@@ -582,8 +583,8 @@ void Malformed()
     ReadResult r = Read(path);
     if (!*c.Expected)
     {
-      PCD_CHECK(r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 3, "%s: %s", c.Name,
-        r.Message.c_str());
+      PCD_CHECK(
+        r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 3, "%s: %s", c.Name, r.Message.c_str());
       continue;
     }
     PCD_CHECK(r.Errors.size() == 1 && r.Cloud->GetNumberOfPoints() == 0 &&
