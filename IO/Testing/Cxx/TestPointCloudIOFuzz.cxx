@@ -461,6 +461,9 @@ int ReadCases(const std::vector<Case>& cases, const std::string& folder, int& ke
 #endif
       const rlimit core = { 0, 0 };
       ::setrlimit(RLIMIT_CORE, &core);
+      // The project's readers report nothing as a warning that is an error (skipped NaN points,
+      // list properties): the batches' output stays readable.
+      vtkObject::GlobalWarningDisplayOff();
       for (size_t i = next; i < cases.size(); ++i)
       {
         *current = i;
@@ -501,7 +504,6 @@ int TestPointCloudIOFuzz(int argc, char* argv[])
   const std::string folder = argc > 1 ? argv[1] : ".";
   const int perSeed = argc > 2 ? std::atoi(argv[2]) : 150;
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  vtkObject::GlobalWarningDisplayOff(); // the organized PCD seed's NaN points are skipped
   // VTK's readers loop on some mutations: they end in a message after this long (the files are
   // tiny; a hang is what the limit is for).
   vtkPointCloudIO::SetReaderTimeLimit(2.0);
@@ -533,11 +535,18 @@ int TestPointCloudIOFuzz(int argc, char* argv[])
       // Round 0 reads the seed itself, which must read.
       const std::string bytes = round == 0 ? seed.Bytes : Mutate(seed.Bytes, rng);
       const std::string path = folder + "/fuzz-" + std::to_string(s) + "." + seed.Extension;
+      const bool vtkFormat =
+        seed.Extension == "vtp" || seed.Extension == "vtu" || seed.Extension == "vtk";
       if (round == 0)
       {
         Spit(path, bytes);
         std::string error;
-        if (!vtkPointCloudIO::Read(path, error))
+        // The organized PCD seed's NaN points are skipped with a warning (VTK's readers keep
+        // theirs: the legacy reader's warnings are errors).
+        vtkObject::SetGlobalWarningDisplay(vtkFormat);
+        const bool read = vtkPointCloudIO::Read(path, error) != nullptr;
+        vtkObject::GlobalWarningDisplayOn();
+        if (!read)
         {
           std::printf("FAILED: the seed %s does not read: %s\n", path.c_str(), error.c_str());
           ++failures;
@@ -547,7 +556,7 @@ int TestPointCloudIOFuzz(int argc, char* argv[])
       }
       ++cases;
       ++perFormat[s];
-      if (seed.Extension == "vtp" || seed.Extension == "vtu" || seed.Extension == "vtk")
+      if (vtkFormat)
       {
         // Read() runs VTK's readers in a child process of its own, under its limits: a crash
         // or a hang there must come back as one line, here.
