@@ -104,6 +104,18 @@ void Split(std::string_view line, std::vector<std::string_view>& tokens)
   }
 }
 
+// Text of the file in a message: quoted, at most 64 characters, control and other non-ASCII
+// bytes shown as '?'.
+std::string Quote(std::string_view text)
+{
+  std::string shown(text.substr(0, 64));
+  for (char& c : shown)
+  {
+    c = (c >= 32 && c < 127) ? c : '?';
+  }
+  return "'" + shown + (text.size() > 64 ? "...'" : "'");
+}
+
 bool ParseCount(std::string_view token, uint64_t& value)
 {
   const char* end = token.data() + token.size();
@@ -122,7 +134,7 @@ std::string ParseValue(std::string_view token, T& value)
   {
     ++first; // std::from_chars does not accept a leading '+'
   }
-  const std::string quoted = "'" + std::string(token) + "'";
+  const std::string quoted = Quote(token);
   if constexpr (std::is_floating_point<T>::value)
   {
     auto r = std::from_chars(first, last, value);
@@ -389,14 +401,7 @@ bool PCDParser::ReadHeader()
       continue;
     }
     const std::string keyword(w[0]);
-    auto quote = [](std::string_view s) {
-      std::string text(s.substr(0, 64));
-      for (char& c : text)
-      {
-        c = (c >= 32 && c < 127) ? c : '?';
-      }
-      return "'" + text + (s.size() > 64 ? "...'" : "'");
-    };
+    const auto quote = Quote;
     static const std::set<std::string> known = { "VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE",
       "COUNT", "WIDTH", "HEIGHT", "VIEWPOINT", "POINTS", "DATA" };
     if (!known.count(keyword))
@@ -526,20 +531,20 @@ bool PCDParser::CheckHeader()
     if (!ParseCount(this->Sizes[i], size) || size > 8)
     {
       return this->Fail(
-        "field '" + f.Name + "': SIZE " + this->Sizes[i].substr(0, 32) + " is not 1, 2, 4 or 8",
+        "field " + Quote(f.Name) + ": SIZE " + Quote(this->Sizes[i]) + " is not 1, 2, 4 or 8",
         lineOf("SIZE"));
     }
     const std::string& letter = this->Types[i];
     if (letter.size() != 1 || !TypeFromLetter(letter[0], static_cast<int>(size), f.Type))
     {
-      return this->Fail("field '" + f.Name + "': unknown type " + letter.substr(0, 32) +
-          " of size " + std::to_string(size) + " (I and U of 1, 2, 4, 8 bytes, F of 4, 8)",
+      return this->Fail("field " + Quote(f.Name) + ": unknown type " + Quote(letter) + " of size " +
+          std::to_string(size) + " (I and U of 1, 2, 4, 8 bytes, F of 4, 8)",
         lineOf("TYPE"));
     }
     if (!this->Counts.empty() &&
       (!ParseCount(this->Counts[i], f.Count) || f.Count == 0 || f.Count > MaxValuesPerPoint))
     {
-      return this->Fail("field '" + f.Name + "': COUNT " + this->Counts[i].substr(0, 32) +
+      return this->Fail("field " + Quote(f.Name) + ": COUNT " + Quote(this->Counts[i]) +
           " is not an integer from 1 to " + std::to_string(MaxValuesPerPoint),
         lineOf("COUNT"));
     }
@@ -997,7 +1002,7 @@ bool PCDParser::ReadAscii()
           });
           if (!problem.empty())
           {
-            return this->Fail(problem + " in field '" + f.Name + "' of " + which, this->Line);
+            return this->Fail(problem + " in field " + Quote(f.Name) + " of " + which, this->Line);
           }
         }
       }

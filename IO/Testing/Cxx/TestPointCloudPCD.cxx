@@ -538,10 +538,10 @@ void Malformed()
       ":3: SIZE has 2 values for 3 fields" },
     { "type-unknown.pcd",
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F Q\nWIDTH 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
-      "field 'z': unknown type Q of size 4" },
+      "field 'z': unknown type 'Q' of size 4" },
     { "float-2.pcd",
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 2\nTYPE F F F\nWIDTH 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
-      "unknown type F of size 2" },
+      "unknown type 'F' of size 2" },
     { "no-z.pcd",
       "VERSION 0.7\nFIELDS x y w\nSIZE 4 4 4\nTYPE F F F\nWIDTH 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
       "no z field" },
@@ -573,7 +573,7 @@ void Malformed()
     { "overflow.pcd", xyz + "WIDTH 4294967296\nHEIGHT 4294967296\nDATA binary\n", "overflows" },
     { "count-zero.pcd",
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 0 1\nWIDTH 1\nDATA ascii\n1 3\n",
-      "COUNT 0 is not an integer from 1" },
+      "COUNT '0' is not an integer from 1" },
     { "empty.pcd", "", "empty file" },
   };
   for (const Case& c : cases)

@@ -664,7 +664,7 @@ void NewFormats()
   Spit(Path("type.pcd"),
     "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F D\nWIDTH 1\nPOINTS 1\nDATA ascii\n1 2 3\n");
   ExpectFailure("PCD unknown type", { Path("type.pcd"), Path("o.vtp") }, 1,
-    "type.pcd:4: field 'z': unknown type D of size 4", 5.0);
+    "type.pcd:4: field 'z': unknown type 'D' of size 4", 5.0);
   // 10^8 points declared by 8 bytes of compressed data: refused before any allocation.
   const uint32_t sizes[2] = { 8, 1600000000 }; // compressed, uncompressed (10^8 x 16 bytes)
   Spit(Path("bomb.pcd"),
