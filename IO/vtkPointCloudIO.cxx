@@ -9,6 +9,9 @@
 #include "vtkIdTypeArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
+#include "vtkPointCloudLASReader.h"
+#include "vtkPointCloudPCDReader.h"
+#include "vtkPointCloudPCDWriter.h"
 #include "vtkPointCloudPLYReader.h"
 #include "vtkPointCloudPLYWriter.h"
 #include "vtkPointCloudTextReader.h"
@@ -54,8 +57,11 @@ vtkStandardNewMacro(vtkPointCloudIO);
 
 namespace
 {
-const char* const ReadableExtensions[] = { "ply", "vtp", "vtu", "vtk", "pts", "xyz", "txt", "csv" };
-const char* const WritableExtensions[] = { "vtp", "vtk", "ply", "csv" };
+const char* const ReadableExtensions[] = { "ply", "vtp", "vtu", "vtk", "pts", "xyz", "txt", "csv",
+  "pcd", "las" };
+const char* const WritableExtensions[] = { "vtp", "vtk", "ply", "csv", "pcd" };
+// Known but not readable in this build: Read() says why in its one line.
+const char* const RecognizedExtensions[] = { "laz" };
 
 // Keeps the first error an algorithm reports (the observer also keeps it off the console: the
 // caller reports it, once, as one line).
@@ -245,7 +251,9 @@ std::string vtkPointCloudIO::GetExtension(const std::string& fileName)
 bool vtkPointCloudIO::CanRead(const std::string& extension)
 {
   return std::find(std::begin(ReadableExtensions), std::end(ReadableExtensions), extension) !=
-    std::end(ReadableExtensions);
+    std::end(ReadableExtensions) ||
+    std::find(std::begin(RecognizedExtensions), std::end(RecognizedExtensions), extension) !=
+    std::end(RecognizedExtensions);
 }
 
 bool vtkPointCloudIO::CanWrite(const std::string& extension)
@@ -358,6 +366,19 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
     r->SetFileName(fileName.c_str());
     reader = r;
   }
+  else if (extension == "pcd")
+  {
+    auto r = vtkSmartPointer<vtkPointCloudPCDReader>::New();
+    r->SetFileName(fileName.c_str());
+    reader = r;
+  }
+  else if (extension == "las" || extension == "laz")
+  {
+    // A .laz file gets the reader's one-line reason why it cannot be read.
+    auto r = vtkSmartPointer<vtkPointCloudLASReader>::New();
+    r->SetFileName(fileName.c_str());
+    reader = r;
+  }
   else if (extension == "vtp")
   {
     auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
@@ -418,8 +439,7 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
   if (!updated || !message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const unsigned long code = reader->GetErrorCode();
-    const bool ours = extension == "ply" || extension == "pts" || extension == "xyz" ||
-      extension == "txt" || extension == "csv";
+    const bool ours = extension != "vtp" && extension != "vtu" && extension != "vtk";
     error = WithFile(fileName,
       !message.empty() ? (ours ? message : "cannot read: " + message)
         : code != vtkErrorCode::NoError
@@ -732,6 +752,14 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
     w->SetInputData(AsPolyData(data));
     w->SetFileName(temporary.c_str());
     w->SetFileTypeToBinary();
+    writer = w;
+    write = [w]() { return w->Write(); };
+  }
+  else if (extension == "pcd")
+  {
+    auto w = vtkSmartPointer<vtkPointCloudPCDWriter>::New();
+    w->SetInputData(data);
+    w->SetFileName(temporary.c_str());
     writer = w;
     write = [w]() { return w->Write(); };
   }

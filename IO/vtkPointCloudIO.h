@@ -8,14 +8,19 @@
  * - `.vtp`, `.vtu`: vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader.
  * - `.vtk`: vtkDataSetReader (legacy VTK); the file must hold a point set.
  * - `.pts`, `.xyz`, `.txt`, `.csv`: vtkPointCloudTextReader.
+ * - `.pcd`: vtkPointCloudPCDReader (ascii, binary, binary_compressed; every field kept).
+ * - `.las`: vtkPointCloudLASReader (LAS 1.0-1.4, point formats 0-10, double coordinates).
+ * - `.laz` is recognized (CanRead() is true, so that a program passes it on) but not listed as
+ *   readable: Read() fails with one line saying that this build has no LASzip.
  *
  * Writing: `.vtp` (vtkXMLPolyDataWriter, binary, compressed), `.vtk` (vtkPolyDataWriter, binary),
  * `.ply` (vtkPointCloudPLYWriter, binary, every numeric point array as a vertex property), `.csv`
- * (vtkPointCloudTextWriter). Write() never leaves a partial file: it writes to a temporary file
+ * (vtkPointCloudTextWriter), `.pcd` (vtkPointCloudPCDWriter, binary, every numeric point array as
+ * a field). Write() never leaves a partial file: it writes to a temporary file
  * in the target's folder and renames it over the target only when the writer succeeded.
  *
  * @sa vtkPointCloudPLYReader vtkPointCloudPLYWriter vtkPointCloudTextReader
- * vtkPointCloudTextWriter
+ * vtkPointCloudTextWriter vtkPointCloudPCDReader vtkPointCloudPCDWriter vtkPointCloudLASReader
  */
 #ifndef vtkPointCloudIO_h
 #define vtkPointCloudIO_h
@@ -41,7 +46,10 @@ public:
   static std::string GetExtension(const std::string& fileName);
 
   ///@{
-  /** Whether an extension (as GetExtension returns it) can be read or written. */
+  /**
+   * Whether an extension (as GetExtension returns it) can be read or written. CanRead() is also
+   * true for `laz`, which Read() refuses with a message that says why.
+   */
   static bool CanRead(const std::string& extension);
   static bool CanWrite(const std::string& extension);
   ///@}

@@ -1,8 +1,9 @@
 // featurepoints: feature points (sharp edges, creases, corners) of a point cloud file, from the
-// shell. Reads PLY, VTP, VTU, legacy VTK, PTS, XYZ/TXT or CSV; runs the project's default detector
-// (crease: two-plane crease fits and a neighbourhood vote), the paper's method (huang2023: Huang et
-// al. 2023) or one of its baselines; writes the cloud with its scores and FeatureMask as VTP, VTK,
-// PLY or CSV; optionally renders a picture offscreen. `featurepoints --help` lists every option.
+// shell. Reads PLY, VTP, VTU, legacy VTK, PTS, XYZ/TXT, CSV, PCD or LAS; runs the project's
+// default detector (crease: two-plane crease fits and a neighbourhood vote), the paper's method
+// (huang2023: Huang et al. 2023) or one of its baselines; writes the cloud with its scores and
+// FeatureMask as VTP, VTK, PLY, CSV or PCD; optionally renders a picture offscreen.
+// `featurepoints --help` lists every option.
 //
 // Exit codes: 0 success; 1 bad input or failure (one line naming the file and the problem);
 // 2 bad usage. A failed run leaves no output file behind and the input is never overwritten.
@@ -457,9 +458,12 @@ void PrintHelp()
     "the paper's method (Huang, Chen, Zhang, Lu 2023).\n"
     "\n"
     "INPUT   %s (PLY: ASCII or binary, any vertex\n"
-    "        properties, faces ignored; CSV/XYZ/TXT: with or without a header line)\n"
+    "        properties, faces ignored; CSV/XYZ/TXT: with or without a header line; PCD: ascii,\n"
+    "        binary or binary_compressed, every field, NaN points skipped; LAS 1.0-1.4: point\n"
+    "        formats 0-10, uncompressed: LAZ is not supported in this build, it has no LASzip)\n"
     "OUTPUT  %s (VTP/VTK: every array; PLY: coordinates and every\n"
-    "        numeric array as vertex properties; CSV: a header line, then one line per point)\n"
+    "        numeric array as vertex properties; CSV: a header line, then one line per point;\n"
+    "        PCD: binary, every numeric array as a field)\n"
     "\n"
     "General options:\n"
     "  --method NAME         the method (default %s):\n",
