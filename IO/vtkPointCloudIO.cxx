@@ -227,6 +227,22 @@ vtkSmartPointer<vtkCellArray> vtkPointCloudIO::MakeVertexCells(vtkIdType n)
   return verts;
 }
 
+bool vtkPointCloudIO::MakeVertexCells(vtkIdType n, vtkCellArray* cells)
+{
+  if (!cells)
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkCellArray> verts = n >= 0 ? MakeVertexCells(n) : nullptr;
+  if (!verts)
+  {
+    cells->Initialize();
+    return false;
+  }
+  cells->ShallowCopy(verts);
+  return true;
+}
+
 std::string vtkPointCloudIO::GetExtension(const std::string& fileName)
 {
   const size_t slash = fileName.find_last_of('/');
@@ -346,6 +362,24 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   const bool vtkFormat = extension == "vtp" || extension == "vtu" || extension == "vtk";
   return vtkFormat ? ReadIsolated(fileName, extension, static_cast<double>(info.st_size), error, observer)
                    : ReadWithReader(fileName, extension, error, observer);
+}
+
+bool vtkPointCloudIO::ReadPolyData(
+  const std::string& fileName, vtkPolyData* output, std::string& error, vtkCommand* observer)
+{
+  if (!output)
+  {
+    error = fileName + ": no polydata to read into";
+    return false;
+  }
+  vtkSmartPointer<vtkPointSet> cloud = Read(fileName, error, observer);
+  if (!cloud)
+  {
+    output->Initialize();
+    return false;
+  }
+  output->ShallowCopy(AsPolyData(cloud));
+  return true;
 }
 
 vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& fileName,
