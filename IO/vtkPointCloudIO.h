@@ -20,8 +20,8 @@
  * counterparts. Methods with a `std::string& error` take a `vtkmodules.vtkCommonCore.reference`
  * from Python.
  *
- * @sa vtkPointCloudReader vtkPointCloudWriter vtkPointCloudPLYReader vtkPointCloudPLYWriter vtkPointCloudTextReader
- * vtkPointCloudTextWriter
+ * @sa vtkPointCloudReader vtkPointCloudWriter vtkPointCloudPLYReader vtkPointCloudPLYWriter
+ * vtkPointCloudTextReader vtkPointCloudTextWriter
  */
 #ifndef vtkPointCloudIO_h
 #define vtkPointCloudIO_h

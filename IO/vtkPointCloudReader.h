@@ -20,7 +20,8 @@
  * Python:
  * @code{.py}
  * from featurepoints import vtkPointCloudReader
- * reader = vtkPointCloudReader(file_name="cloud.xyz")
+ * reader = vtkPointCloudReader()
+ * reader.SetFileName("cloud.xyz")
  * reader.Update()
  * if reader.GetErrorCode():
  *     raise RuntimeError(reader.GetErrorMessage())

@@ -17,7 +17,8 @@
  * Python:
  * @code{.py}
  * from featurepoints import vtkPointCloudWriter
- * writer = vtkPointCloudWriter(file_name="features.ply")
+ * writer = vtkPointCloudWriter()
+ * writer.SetFileName("features.ply")
  * writer.SetInputConnection(features.GetOutputPort())
  * if not writer.Write():
  *     raise RuntimeError(writer.GetErrorMessage())

@@ -277,6 +277,19 @@ def test_neighborhoods_and_voxel_screen_from_python():
     assert spacing == pytest.approx(0.00944515, rel=1e-5)  # the program's mean spacing
     cells = vtkCellArray()
     assert vtkPointCloudNeighborhoods.MakeVertexCells(7212, cells) and cells.GetNumberOfCells() == 7212
+    # The mean spacing from a full table is the same as the one searched for.
+    every = vtkIdList()
+    for i in range(7212):
+        every.InsertNextId(i)
+    fresh = vtkPointCloudNeighborhoods()
+    assert fresh.Build(cloud.GetPoints()) and fresh.FindNearestNeighbors(2, every, table)
+    assert fresh.ComputeMeanSpacing(every, table) == spacing
+    # A spatial order is a permutation of the points.
+    order = vtkIntArray()
+    reordered = vtkPointCloudNeighborhoods()
+    assert reordered.Build(cloud.GetPoints()) and reordered.ReorderSpatially(order)
+    assert np.array_equal(np.sort(vtk_to_numpy(order)), np.arange(7212))
+    assert not np.array_equal(vtk_to_numpy(order), np.arange(7212))
 
     screen = vtkVoxelDensityContrastFilter()
     screen.SetInputData(cloud)

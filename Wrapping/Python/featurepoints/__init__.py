@@ -3,16 +3,18 @@
 The classes of the C++ modules FeaturePoints::Filters and FeaturePoints::IO, wrapped by VTK's
 Python wrapper; they work with vtkmodules' own classes (vtkPolyData, vtkPolyDataMapper, ...)::
 
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
     from featurepoints import vtkPointCloudReader, vtkCreaseVotingFeatures
 
-    reader = vtkPointCloudReader(file_name="cloud.xyz")
+    reader = vtkPointCloudReader()
+    reader.SetFileName("cloud.xyz")
     features = vtkCreaseVotingFeatures()
     features.SetInputConnection(reader.GetOutputPort())
     features.Update()
 
 Readers and writers: vtkPointCloudReader and vtkPointCloudWriter pick the format by the file's
 extension (vtkPointCloudIO); errors are VTK errors (vtkErrorMacro) and GetErrorMessage().
+Keep a Python reference to every algorithm of a pipeline: in VTK 9.1 a consumer does not keep its
+producer alive, so `f.SetInputConnection(vtkPointCloudReader().GetOutputPort())` crashes later.
 """
 
 # The VTK modules these classes derive from and take as arguments: imported first, so that the
