@@ -379,6 +379,11 @@ bool vtkPointCloudIO::ReadPolyData(
     return false;
   }
   output->ShallowCopy(AsPolyData(cloud));
+  if (output->GetNumberOfCells() == 0 && output->GetNumberOfPoints() > 0)
+  {
+    // Points alone (a .vtp or .vtk cloud written without cells): vertices, so that it renders.
+    output->SetVerts(MakeVertexCells(output->GetNumberOfPoints()));
+  }
   return true;
 }
 

@@ -69,8 +69,8 @@ public:
     const std::string& fileName, std::string& error, vtkCommand* observer = nullptr);
 
   /**
-   * Read() into `output`: the cloud's points and point data, its cells when it is polydata, one
-   * vertex cell per point otherwise (a .vtu or .vtk unstructured grid). Returns false, with
+   * Read() into `output`: the cloud's points and point data, its cells when it is polydata with
+   * cells, one vertex cell per point otherwise (points alone, a .vtu or .vtk unstructured grid). Returns false, with
    * `output` emptied and `error` set as by Read(), on any failure.
    */
   static bool ReadPolyData(const std::string& fileName, vtkPolyData* output, std::string& error,

@@ -4,7 +4,8 @@
  *          file's extension: one reader for a pipeline, for Python and for ParaView.
  *
  * The output is polydata: the file's points and every point array it holds (scores, normals,
- * colours, labels), its cells when the file holds polydata, one vertex cell per point otherwise.
+ * colours, labels), its cells when the file holds polydata with cells, one vertex cell per point
+ * otherwise.
  * The formats are vtkPointCloudIO's (GetReadableExtensions(); `.ply`, `.vtp`, `.vtu`, `.vtk`,
  * `.pts`, `.xyz`, `.txt`, `.csv` and whatever is added there), read with the same readers and
  * the same guards: VTK's own readers run in a child process under a time and memory limit
