@@ -233,6 +233,22 @@ vtkSmartPointer<vtkCellArray> vtkPointCloudIO::MakeVertexCells(vtkIdType n)
   return verts;
 }
 
+bool vtkPointCloudIO::MakeVertexCells(vtkIdType n, vtkCellArray* cells)
+{
+  if (!cells)
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkCellArray> verts = n >= 0 ? MakeVertexCells(n) : nullptr;
+  if (!verts)
+  {
+    cells->Initialize();
+    return false;
+  }
+  cells->ShallowCopy(verts);
+  return true;
+}
+
 std::string vtkPointCloudIO::GetExtension(const std::string& fileName)
 {
   const size_t slash = fileName.find_last_of('/');
@@ -354,6 +370,29 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   const bool vtkFormat = extension == "vtp" || extension == "vtu" || extension == "vtk";
   return vtkFormat ? ReadIsolated(fileName, extension, static_cast<double>(info.st_size), error, observer)
                    : ReadWithReader(fileName, extension, error, observer);
+}
+
+bool vtkPointCloudIO::ReadPolyData(
+  const std::string& fileName, vtkPolyData* output, std::string& error, vtkCommand* observer)
+{
+  if (!output)
+  {
+    error = fileName + ": no polydata to read into";
+    return false;
+  }
+  vtkSmartPointer<vtkPointSet> cloud = Read(fileName, error, observer);
+  if (!cloud)
+  {
+    output->Initialize();
+    return false;
+  }
+  output->ShallowCopy(AsPolyData(cloud));
+  if (output->GetNumberOfCells() == 0 && output->GetNumberOfPoints() > 0)
+  {
+    // Points alone (a .vtp or .vtk cloud written without cells): vertices, so that it renders.
+    output->SetVerts(MakeVertexCells(output->GetNumberOfPoints()));
+  }
+  return true;
 }
 
 vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& fileName,
@@ -661,18 +700,28 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fi
   return result;
 }
 
-std::string vtkPointCloudIO::CreateTemporaryFile(const std::string& fileName, std::string& error)
+namespace
+{
+// CreateTemporaryFile(), with mkstemp choosing the name in `inProgress` when it is given (and the
+// name fits): the buffer RemoveTemporaryFileInProgress() reads. Blocking signals covers only the
+// calling thread, and a signal may be handled on another (a TBB worker): the handler must find
+// the name from the moment the file can exist. Until mkstemp has chosen, the buffer holds the
+// template, which names no file.
+std::string MakeTemporary(
+  const std::string& fileName, std::string& error, char* inProgress, size_t inProgressSize)
 {
   const size_t slash = fileName.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "." : fileName.substr(0, slash + 1);
   const std::string base = slash == std::string::npos ? fileName : fileName.substr(slash + 1);
-  std::vector<char> name(
+  std::vector<char> local(
     (folder == "." ? std::string("./") : folder).size() + base.size() + 10, '\0');
-  std::snprintf(name.data(), name.size(), "%s.%s.XXXXXX",
+  char* name = inProgress && local.size() <= inProgressSize ? inProgress : local.data();
+  std::snprintf(name, local.size(), "%s.%s.XXXXXX",
     (folder == "." ? std::string("./") : folder).c_str(), base.c_str());
-  const int fd = ::mkstemp(name.data());
+  const int fd = ::mkstemp(name);
   if (fd < 0)
   {
+    name[0] = '\0';
     error = fileName + ": cannot create a file in " + (folder == "." ? "the current folder" : folder) +
       ": " + std::strerror(errno);
     return "";
@@ -682,7 +731,18 @@ std::string vtkPointCloudIO::CreateTemporaryFile(const std::string& fileName, st
   ::umask(mask);
   ::fchmod(fd, 0666 & ~mask);
   ::close(fd);
-  return name.data();
+  const std::string made = name;
+  if (inProgress && name != inProgress)
+  {
+    std::snprintf(inProgress, inProgressSize, "%s", made.c_str());
+  }
+  return made;
+}
+} // namespace
+
+std::string vtkPointCloudIO::CreateTemporaryFile(const std::string& fileName, std::string& error)
+{
+  return MakeTemporary(fileName, error, nullptr, 0);
 }
 
 bool vtkPointCloudIO::CanCreate(const std::string& fileName, std::string& error)
@@ -719,15 +779,13 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
       "; writable: " + GetWritableExtensions();
     return false;
   }
-  // No signal between creating the temporary file and naming it for the signal handlers.
+  // No signal on this thread while the temporary file is created; on other threads, the handlers
+  // find its name in TemporaryInProgress from the moment it can exist (MakeTemporary).
   sigset_t all, previous;
   sigfillset(&all);
   ::sigprocmask(SIG_BLOCK, &all, &previous);
-  const std::string temporary = CreateTemporaryFile(fileName, error);
-  if (!temporary.empty())
-  {
-    std::snprintf(TemporaryInProgress, sizeof(TemporaryInProgress), "%s", temporary.c_str());
-  }
+  const std::string temporary =
+    MakeTemporary(fileName, error, TemporaryInProgress, sizeof(TemporaryInProgress));
   ::sigprocmask(SIG_SETMASK, &previous, nullptr);
   if (temporary.empty())
   {

@@ -8,11 +8,13 @@
 // Exit codes: 0 success; 1 bad input or failure (one line naming the file and the problem);
 // 2 bad usage. A failed run leaves no output file behind and the input is never overwritten.
 #include "vtkActor.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
 #include "vtkFeatureCurveExtraction.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkFieldData.h"
@@ -23,6 +25,7 @@
 #include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointCloudIO.h"
+#include "vtkPointCloudReader.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -1319,12 +1322,18 @@ int Run(const Settings& s)
   // Read.
   progress->Stage("reading");
   auto start = Clock::now();
-  vtkSmartPointer<vtkPointSet> cloud = vtkPointCloudIO::Read(s.Input, error, progress);
+  vtkNew<vtkPointCloudReader> reader;
+  reader->SetFileName(s.Input.c_str());
+  reader->AddObserver(vtkCommand::ProgressEvent, progress);
+  vtkNew<vtkCallbackCommand> keepError; // the reader's error is reported below, once
+  reader->AddObserver(vtkCommand::ErrorEvent, keepError);
+  reader->Update();
   progress->Finish();
-  if (!cloud)
+  if (reader->GetErrorCode() != vtkErrorCode::NoError)
   {
-    Fail(ExitFailure, error);
+    Fail(ExitFailure, reader->GetErrorMessage());
   }
+  vtkSmartPointer<vtkPointSet> cloud = reader->GetOutput();
   times.emplace_back("read", Seconds(start));
   const vtkIdType n = cloud->GetNumberOfPoints();
   if (n == 0)

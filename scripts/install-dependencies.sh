@@ -20,7 +20,8 @@ if [ "${1:-}" = "--paraview" ]; then
     zlib1g-dev)
   conflicting=(libvtk9-dev python3-vtk9)
 else
-  packages=("${common[@]}" libvtk9-dev)
+  # python3-vtk9 (a dependency of libvtk9-dev) and these: the Python package and its tests.
+  packages=("${common[@]}" libvtk9-dev python3-numpy python3-pytest)
   conflicting=(paraview-dev python3-paraview)
 fi
 missing=()

@@ -5,17 +5,18 @@
 Loads the plugin, checks the server-manager XML (menu category, documentation on every
 property, input restricted to point sets), runs every detector on the synthetic cloud of
 REFERENCE (written by the plain VTK build's test TestFeaturePointsReference) and compares the
-arrays, the number of feature points and the feature point ids; shows the main filter (it must
-come up as points coloured by F), saves a screenshot and compares it with BASELINE.png.
+arrays, the number of feature points and the feature point ids; opens a small .xyz file written
+here through OpenDataFile (File > Open), which must pick the plugin's Point Cloud Reader, and
+checks its points and columns; shows the main filter (it must come up as points coloured by
+F), saves a screenshot and compares it with BASELINE.png.
 Exits 1 on any failed check.
 """
 import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import (CreateRenderView, LoadPlugin, Render, ResetCamera, SaveScreenshot,
-                             Wavelet,
-                             Show)
+from paraview.simple import (CreateRenderView, LoadPlugin, OpenDataFile, Render, ResetCamera,
+                             SaveScreenshot, Wavelet, Show)
 
 plugin, reference_file, baseline, folder = sys.argv[1:5]
 failures = []
@@ -59,6 +60,50 @@ for group, name in [("filters", n) for n in proxies] + [("sources", "FeatureMode
     if group == "filters":
         domain = proto.GetProperty("Input").GetDomain("input_type")
         check(domain.IsInDomain(wavelet.SMProxy, 0) == 0, "%s accepts an image" % name)
+
+# The reader: File > Open of a .xyz file picks the plugin's Point Cloud Reader (the reader
+# factory's choice by extension, as in the GUI), which reads every point and every column.
+proto = pxm.GetPrototypeProxy("sources", "PointCloudReader")
+check(proto is not None, "PointCloudReader: no proxy")
+factory = servermanager.vtkSMProxyManager.GetProxyManager().GetReaderFactory()
+factory.UpdateAvailableReaders()
+cloud_file = os.path.join(folder, "TestFeaturePointsPlugin.xyz")
+rows = [(0.5 * i, 0.25 * j, 0.125 * i * j, 10 * i + j) for i in range(5) for j in range(4)]
+with open(cloud_file, "w") as f:
+    f.write("# a 5 x 4 grid: x y z and one more column\n")
+    for row in rows:
+        f.write("%g %g %g %g\n" % row)
+for extension in ["pts", "txt", "csv", "pcd", "las"]:
+    hint = proto.GetHints().FindNestedElementByName("ReaderFactory") if proto else None
+    check(hint is not None and extension in hint.GetAttribute("extensions").split(),
+          "PointCloudReader: .%s is not in its ReaderFactory extensions" % extension)
+# OpenDataFile asks the reader factory, as File > Open does: it must choose the plugin's reader.
+try:
+    opened = OpenDataFile(cloud_file)
+except RuntimeError as error:
+    opened = None
+    print("OpenDataFile: %s" % error)
+check(opened is not None and opened.GetXMLName() == "PointCloudReader",
+      "File > Open of a .xyz file (OpenDataFile) made %s, not a PointCloudReader"
+      % (opened.GetXMLName() if opened is not None else "nothing"))
+if opened is not None:
+    cloud = servermanager.Fetch(opened)
+    column = cloud.GetPointData().GetArray("Field 3")
+    points = [cloud.GetPoint(i) for i in range(cloud.GetNumberOfPoints())]
+    check(cloud.GetNumberOfPoints() == len(rows) and cloud.GetNumberOfVerts() == len(rows),
+          "PointCloudReader: %d points and %d vertices, not %d"
+          % (cloud.GetNumberOfPoints(), cloud.GetNumberOfVerts(), len(rows)))
+    check(points == [r[:3] for r in rows], "PointCloudReader: the points differ from the file's")
+    check(column is not None and [column.GetValue(i) for i in range(column.GetNumberOfTuples())]
+          == [r[3] for r in rows], "PointCloudReader: column 4 is not the point array 'Field 3'")
+    print("PointCloudReader: %s opened by File > Open, %d points, arrays %s"
+          % (os.path.basename(cloud_file), cloud.GetNumberOfPoints(),
+             [cloud.GetPointData().GetArrayName(i)
+              for i in range(cloud.GetPointData().GetNumberOfArrays())]))
+    missing = globals()["PointCloudReader"](FileName=os.path.join(folder, "missing.xyz"))
+    missing.UpdatePipeline()
+    check(servermanager.Fetch(missing).GetNumberOfPoints() == 0,
+          "PointCloudReader: a missing file gives points")
 
 # Results: the same as the plain VTK build's, for the same generated cloud.
 reference = {}
