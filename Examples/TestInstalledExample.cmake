@@ -1,7 +1,10 @@
 # CTest: install the project into a scratch prefix, build Examples/ against it with
 # find_package(FeaturePoints) exactly as a user's project would, and run the example on a file:
 # read, extract, write, render to PNG. Keeps the installed package and the example from rotting.
-#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DINPUT=... [-DXVFB_RUN=...] -P this
+# With -DPYTHON (the interpreter) and -DPYTHON_DESTINATION, the installed Python package is
+# imported from the prefix alone (no build tree on PYTHONPATH) and runs a reader and a detector.
+#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DINPUT=... [-DXVFB_RUN=...]
+#         [-DPYTHON=... -DPYTHON_DESTINATION=...] -P this
 foreach(_var BUILD_DIR SOURCE_DIR WORK_DIR INPUT)
   if(NOT DEFINED ${_var})
     message(FATAL_ERROR "${_var} is not set")
@@ -41,3 +44,22 @@ foreach(_file example.vtp example.png)
   endif()
 endforeach()
 message(STATUS "installed example wrote example.vtp and example.png")
+
+if(PYTHON)
+  set(_site "${WORK_DIR}/install/${PYTHON_DESTINATION}")
+  set(_script [=[
+import sys
+import featurepoints
+from featurepoints import vtkCreaseVotingFeatures, vtkFeaturePointExtraction, vtkPointCloudReader
+assert featurepoints.__file__.startswith(sys.argv[1]), featurepoints.__file__
+reader = vtkPointCloudReader()
+reader.SetFileName(sys.argv[2])
+features = vtkCreaseVotingFeatures()
+features.SetInputConnection(reader.GetOutputPort())
+features.Update()
+assert features.GetNumberOfFeaturePoints() == 556, features.GetNumberOfFeaturePoints()
+print("installed featurepoints:", featurepoints.__file__)
+]=])
+  run_step("import the installed Python package from ${_site}" "${CMAKE_COMMAND}" -E env
+    "PYTHONPATH=${_site}" "${PYTHON}" -c "${_script}" "${_site}" "${INPUT}")
+endif()

@@ -37,9 +37,12 @@
  * 2b. Scale per point (MultiScale). Where neither the quadric, the hinge nor the crossing planes
  *    explain the k nearest within twice sigma^2 per degree of freedom (two creases, a groove, a
  *    small face in view), the neighbourhood is halved (k/2, k/4, not below 20 points) until one
- *    does; that point's fit and vote use that many neighbours. Where none explains even the
- *    smallest within 3 sigma^2 (a corner, faces narrower than the smallest scale) the point is a
- *    feature point.
+ *    does; that point's fit and vote use that many neighbours. Where none does at any scale, the
+ *    largest scale whose curved hinge explains them (each side of the hinge's line its own
+ *    quadric, turning by at most a radian over the side's radius: a crease between curved
+ *    faces, such as a cylinder's rim, which two planes fit only within the faces' curvature and
+ *    never within a clean cloud's noise). Where nothing explains even the smallest within
+ *    3 sigma^2 (a corner, faces narrower than the smallest scale) the point is a feature point.
  * 3. Crease line of the fit: the intersection of the two planes (when they are not parallel).
  * 4. Vote. A point j of P_i's neighbourhood (P_i included) votes for P_i when its two planes
  *    fit better than one (gain above 1), meet at MinimumAngle or more, and its crease line
@@ -69,9 +72,11 @@
  *    borders among the 50 nearest feature points spread (middle eigenvalue of the mean of t t^T
  *    above 0.18), else CONVEX or CONCAVE by the side of the line the fitted planes' centroids
  *    lie on, against the point's normal.
- * 9. ThinFeatures: across each crease line only the feature points nearest it (non-maximum
- *    suppression among the 8 nearest feature points lying more across the line than along it),
- *    across each border the outermost.
+ * 9. ThinFeatures: the crease and corner points whose consensus distance to the crease, the
+ *    median distance to the lines that vote for them (no single noisy fit places the line as
+ *    well), is within half their local spacing, widened by the noise: sqrt((s/2)^2 + sigma^2),
+ *    s = sqrt(pi r^2 / k) the spacing of a uniform sampling as dense as their NormalNeighbors
+ *    nearest (r: the distance to the furthest of them). Across each border the outermost.
  *
  * Output arrays: `CreaseVotes` (float, the score, 0-1), `CreaseGain` (float, G_i), `CreaseAngle`
  * (float, the angle between the two fitted planes in degrees, 0 when no line was found),
@@ -145,10 +150,11 @@ public:
 
   ///@{
   /**
-   * One point wide. Default off (the mask is a band about 2 BandWidth d wide). On: across each
-   * crease only the points nearest its fitted line are kept (non-maximum suppression among the
-   * 8 nearest feature points that lie more across the line than along it), across each border
-   * the outermost: the row of points nearest the edge, as labels that mark edges as lines do.
+   * One point wide. Default off (the mask is a band about 2 BandWidth d wide). On: only the
+   * crease and corner points within half a local spacing of the crease (by the median distance
+   * to the lines that vote for them, the band widened by the noise) are kept, and across each
+   * border the outermost: the row of points nearest the edge, as labels that mark edges as
+   * lines do (step 9 above).
    */
   vtkSetMacro(ThinFeatures, bool);
   vtkGetMacro(ThinFeatures, bool);

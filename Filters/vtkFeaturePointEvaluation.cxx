@@ -151,6 +151,18 @@ vtkSmartPointer<vtkUnsignedCharArray> vtkFeaturePointEvaluation::LabelsFromColor
   return labels;
 }
 
+bool vtkFeaturePointEvaluation::LabelsFromColors(vtkDataArray* colors, vtkUnsignedCharArray* labels)
+{
+  vtkSmartPointer<vtkUnsignedCharArray> made = labels ? LabelsFromColors(colors) : nullptr;
+  if (!made)
+  {
+    return false;
+  }
+  labels->DeepCopy(made);
+  labels->SetName(made->GetName());
+  return true;
+}
+
 void vtkFeaturePointEvaluation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

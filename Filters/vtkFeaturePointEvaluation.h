@@ -66,8 +66,12 @@ public:
   /**
    * PCEDNet's colour labels: 1 where the colour (the first three components, 0-255) is
    * (255, 0, 0) or (168, 0, 0), else 0. Returns null when the array has fewer than 3 components.
+   * C++ only (a smart pointer); the wrapped counterpart fills `labels` (named SharpLabel) and
+   * returns false, `labels` untouched, when the array has fewer than 3 components.
    */
-  static vtkSmartPointer<vtkUnsignedCharArray> LabelsFromColors(vtkDataArray* colors);
+  VTK_WRAPEXCLUDE static vtkSmartPointer<vtkUnsignedCharArray> LabelsFromColors(
+    vtkDataArray* colors);
+  static bool LabelsFromColors(vtkDataArray* colors, vtkUnsignedCharArray* labels);
 
   ///@{
   /** Counts of the last evaluation. */

@@ -9,6 +9,7 @@
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkIdList.h"
+#include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
@@ -17,6 +18,7 @@
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -1265,4 +1267,105 @@ void vtkPointCloudNeighborhoods::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FirstInvalidPoint: " << this->FirstInvalidPoint << "\n";
   os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
   os << indent << "MeanSpacing: " << this->MeanSpacing << "\n";
+}
+
+// The wrapped counterparts of the methods on std::vector tables and bare pointers (see the header):
+// copies between VTK arrays and the C++ ones.
+namespace
+{
+std::vector<vtkIdType> IdsOf(vtkIdList* list)
+{
+  std::vector<vtkIdType> ids;
+  if (list)
+  {
+    ids.assign(list->GetPointer(0), list->GetPointer(0) + list->GetNumberOfIds());
+  }
+  return ids;
+}
+} // namespace
+
+bool vtkPointCloudNeighborhoods::MakeVertexCells(vtkIdType n, vtkCellArray* cells)
+{
+  if (!cells || n < 0)
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkCellArray> verts = MakeVertexCells(n);
+  if (!verts)
+  {
+    cells->Initialize();
+    return false;
+  }
+  cells->ShallowCopy(verts);
+  if (cells->GetNumberOfCells() != n)
+  {
+    cells->Initialize();
+    return false;
+  }
+  return true;
+}
+
+void vtkPointCloudNeighborhoods::GetValidMask(vtkUnsignedCharArray* mask) const
+{
+  if (!mask)
+  {
+    return;
+  }
+  mask->SetNumberOfComponents(1);
+  mask->SetNumberOfValues(static_cast<vtkIdType>(this->Valid.size()));
+  std::copy(this->Valid.begin(), this->Valid.end(), mask->GetPointer(0));
+}
+
+bool vtkPointCloudNeighborhoods::ReorderSpatially(vtkIntArray* originalIds)
+{
+  std::vector<int32_t> ids;
+  if (!originalIds || !this->ReorderSpatially(ids))
+  {
+    return false;
+  }
+  originalIds->SetNumberOfComponents(1);
+  originalIds->SetNumberOfValues(static_cast<vtkIdType>(ids.size()));
+  std::copy(ids.begin(), ids.end(), originalIds->GetPointer(0));
+  return true;
+}
+
+double vtkPointCloudNeighborhoods::ComputeMeanSpacing(vtkIdList* ids, vtkIntArray* table)
+{
+  const std::vector<vtkIdType> rows = IdsOf(ids);
+  const int k = table ? table->GetNumberOfComponents() : 0;
+  if (k < 1 || table->GetNumberOfTuples() != static_cast<vtkIdType>(rows.size()))
+  {
+    vtkErrorMacro(<< "ComputeMeanSpacing: the table must have one tuple per id ("
+                  << rows.size() << ")");
+    return 0.0;
+  }
+  const int32_t* first = table->GetPointer(0);
+  const std::vector<int32_t> entries(first, first + rows.size() * static_cast<size_t>(k));
+  return this->ComputeMeanSpacing(rows, entries, k);
+}
+
+bool vtkPointCloudNeighborhoods::FindNearestNeighbors(
+  int k, vtkIdList* ids, vtkIntArray* table, vtkDoubleArray* nearestDistances)
+{
+  if (!table || k < 1)
+  {
+    return false;
+  }
+  const std::vector<vtkIdType> rows = IdsOf(ids);
+  std::vector<int32_t> entries;
+  std::vector<double> nearest;
+  if (!this->FindNearestNeighbors(k, rows, entries, nearestDistances ? &nearest : nullptr))
+  {
+    return false;
+  }
+  table->SetNumberOfComponents(k);
+  table->SetNumberOfTuples(static_cast<vtkIdType>(rows.size()));
+  std::copy(entries.begin(), entries.end(), table->GetPointer(0));
+  if (nearestDistances)
+  {
+    nearestDistances->SetNumberOfComponents(1);
+    nearestDistances->SetNumberOfValues(static_cast<vtkIdType>(nearest.size()));
+    std::copy(nearest.begin(), nearest.end(), nearestDistances->GetPointer(0));
+  }
+  return true;
 }

@@ -23,6 +23,9 @@
  * tables are identical whatever the number of threads or the SMP backend. Clouds of more than
  * 2^31 - 1 points are refused (the tables hold 32-bit ids).
  *
+ * Python: the methods on std::vector<int32_t> tables and bare pointers are C++ only; each has a
+ * wrapped counterpart on VTK arrays (vtkIdList of point ids, a k-component vtkIntArray table).
+ *
  * @sa vtkFeaturePointExtraction vtkStaticPointLocator
  */
 #ifndef vtkPointCloudNeighborhoods_h
@@ -39,9 +42,13 @@
 
 class vtkAlgorithm;
 class vtkCellArray;
+class vtkDoubleArray;
+class vtkIdList;
+class vtkIntArray;
 class vtkPoints;
 class vtkPolyData;
 class vtkStaticPointLocator;
+class vtkUnsignedCharArray;
 
 class FEATUREPOINTSFILTERS_EXPORT vtkPointCloudNeighborhoods : public vtkObject
 {
@@ -97,8 +104,10 @@ public:
    *
    * Returns false, and changes nothing, with STATIC_POINT_LOCATOR, before a successful Build(), or
    * once a spacing or a neighbour table has been computed.
+   * C++ only; the wrapped counterpart fills `originalIds` (a vtkIntArray) instead.
    */
-  bool ReorderSpatially(std::vector<int32_t>& originalIds);
+  VTK_WRAPEXCLUDE bool ReorderSpatially(std::vector<int32_t>& originalIds);
+  bool ReorderSpatially(vtkIntArray* originalIds);
 
   /**
    * Compute the mean spacing d (see the class comment) with one nearest-neighbour query per valid
@@ -111,9 +120,12 @@ public:
    * The same mean spacing, taken from a k-nearest table that FindNearestNeighbors() has already
    * filled for every valid point (`ids` lists them, row r for ids[r]), so that a caller that needs
    * every point's neighbourhood anyway does not search twice. Returns the same value as
-   * ComputeMeanSpacing().
+   * ComputeMeanSpacing(). C++ only; the wrapped counterpart takes the table as FindNearestNeighbors'
+   * wrapped counterpart fills it (k = its number of components).
    */
-  double ComputeMeanSpacing(const std::vector<vtkIdType>& ids, const std::vector<int32_t>& table, int k);
+  VTK_WRAPEXCLUDE double ComputeMeanSpacing(
+    const std::vector<vtkIdType>& ids, const std::vector<int32_t>& table, int k);
+  double ComputeMeanSpacing(vtkIdList* ids, vtkIntArray* table);
 
   /**
    * Distance from each listed point to its nearest other point (`distances[r]` for `ids[r]`, 0
@@ -130,20 +142,26 @@ public:
    * If `nearestDistances` is given it receives, per row, the distance to the nearest other point.
    * Progress is reported through `progressAlg` between `progressStart` and `progressEnd`; returns
    * false when that algorithm's AbortExecute flag is raised.
+   * C++ only; the wrapped counterpart fills `table` (a vtkIntArray of k components, one tuple
+   * per id) and, when given, `nearestDistances` (one value per id).
    */
-  bool FindNearestNeighbors(int k, const std::vector<vtkIdType>& ids, std::vector<int32_t>& table,
-    std::vector<double>* nearestDistances = nullptr, vtkAlgorithm* progressAlg = nullptr,
-    double progressStart = 0.0, double progressEnd = 1.0);
+  VTK_WRAPEXCLUDE bool FindNearestNeighbors(int k, const std::vector<vtkIdType>& ids,
+    std::vector<int32_t>& table, std::vector<double>* nearestDistances = nullptr,
+    vtkAlgorithm* progressAlg = nullptr, double progressStart = 0.0, double progressEnd = 1.0);
+  bool FindNearestNeighbors(int k, vtkIdList* ids, vtkIntArray* table,
+    vtkDoubleArray* nearestDistances = nullptr);
 
   ///@{
   /**
    * Statistics of the points given to Build(). A point is valid when its three coordinates are
-   * finite. GetFirstInvalidPoint() is -1 when all are valid.
+   * finite. GetFirstInvalidPoint() is -1 when all are valid. GetValidMask(): 1 per valid point,
+   * 0 per invalid one (C++: a pointer into this object; Python: into the array given).
    */
   vtkIdType GetNumberOfPoints() const { return this->NumberOfPoints; }
   vtkIdType GetNumberOfValidPoints() const { return this->NumberOfValidPoints; }
   vtkIdType GetFirstInvalidPoint() const { return this->FirstInvalidPoint; }
-  const unsigned char* GetValidMask() const { return this->Valid.data(); }
+  VTK_WRAPEXCLUDE const unsigned char* GetValidMask() const { return this->Valid.data(); }
+  void GetValidMask(vtkUnsignedCharArray* mask) const;
   ///@}
 
   /**
@@ -161,8 +179,8 @@ public:
    * Centre of the bounding box of the valid points (Eq. 10 of the paper) and the box itself
    * (xmin, xmax, ymin, ymax, zmin, zmax).
    */
-  const double* GetCenter() const { return this->Center; }
-  const double* GetBounds() const { return this->Bounds; }
+  const double* GetCenter() const VTK_SIZEHINT(3) { return this->Center; }
+  const double* GetBounds() const VTK_SIZEHINT(6) { return this->Bounds; }
 
   /** Why Build() failed. */
   const std::string& GetErrorText() const { return this->ErrorText; }
@@ -172,9 +190,12 @@ public:
 
   /**
    * One vertex cell per point (0 .. n-1), with 32-bit storage when n allows (nullptr when the
-   * memory cannot be had): how the filters of this module make a cloud render as is.
+   * memory cannot be had): how the filters of this module make a cloud render as is. C++ only (a
+   * smart pointer); the wrapped counterpart fills `cells` and returns false when the memory cannot
+   * be had.
    */
-  static vtkSmartPointer<vtkCellArray> MakeVertexCells(vtkIdType n);
+  VTK_WRAPEXCLUDE static vtkSmartPointer<vtkCellArray> MakeVertexCells(vtkIdType n);
+  static bool MakeVertexCells(vtkIdType n, vtkCellArray* cells);
 
 protected:
   vtkPointCloudNeighborhoods();

@@ -1,6 +1,7 @@
 #include "vtkVoxelDensityContrastFilter.h"
 
 #include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFeaturePointsDensityContrast.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -136,4 +137,28 @@ void vtkVoxelDensityContrastFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ContrastSigmas: " << this->ContrastSigmas << "\n";
   os << indent << "ContrastRule: " << this->ContrastRule << "\n";
   os << indent << "MinimumContrastFraction: " << this->MinimumContrastFraction << "\n";
+}
+
+vtkIdType vtkVoxelDensityContrastFilter::MarkCandidates(vtkPoints* points,
+  vtkUnsignedCharArray* valid, double spacing, vtkDoubleArray* nearest,
+  vtkUnsignedCharArray* candidate, vtkIntArray* voxelCount)
+{
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  if (!candidate || (valid && valid->GetNumberOfValues() != n) ||
+    (nearest && nearest->GetNumberOfValues() != n))
+  {
+    vtkErrorMacro(<< "MarkCandidates: valid and nearest need one value per point (" << n
+                  << "), and candidate an array to fill");
+    return -1;
+  }
+  candidate->SetNumberOfComponents(1);
+  candidate->SetNumberOfValues(n);
+  if (voxelCount)
+  {
+    voxelCount->SetNumberOfComponents(1);
+    voxelCount->SetNumberOfValues(n);
+  }
+  return this->MarkCandidates(points, valid ? valid->GetPointer(0) : nullptr, spacing,
+    nearest ? nearest->GetPointer(0) : nullptr, candidate->GetPointer(0),
+    voxelCount ? voxelCount->GetPointer(0) : nullptr);
 }

@@ -60,8 +60,11 @@
 
 #include <cstdint> // For int32_t
 
+class vtkDoubleArray;
+class vtkIntArray;
 class vtkPoints;
 class vtkPointCloudNeighborhoods;
+class vtkUnsignedCharArray;
 namespace featurepoints
 {
 class DensityContrast;
@@ -145,10 +148,14 @@ public:
    * others, using the given spacing (> 0). `nearest` holds each point's distance to its nearest
    * other point (vtkPointCloudNeighborhoods::GetNearestDistances(); needed by BLOCK_SPACING only).
    * `voxelCount`, when not null, receives N of each point's voxel (0 for invalid points). Returns
-   * the number of candidates.
+   * the number of candidates. C++ only (bare pointers); the wrapped counterpart takes VTK arrays
+   * of one value per point (`valid` and `nearest` may be null as above) and sizes `candidate`
+   * and `voxelCount` itself; it returns -1 when an input array has the wrong size.
    */
-  vtkIdType MarkCandidates(vtkPoints* points, const unsigned char* valid, double spacing,
-    const double* nearest, unsigned char* candidate, int32_t* voxelCount = nullptr);
+  VTK_WRAPEXCLUDE vtkIdType MarkCandidates(vtkPoints* points, const unsigned char* valid,
+    double spacing, const double* nearest, unsigned char* candidate, int32_t* voxelCount = nullptr);
+  vtkIdType MarkCandidates(vtkPoints* points, vtkUnsignedCharArray* valid, double spacing,
+    vtkDoubleArray* nearest, vtkUnsignedCharArray* candidate, vtkIntArray* voxelCount = nullptr);
 
   /**
    * A quick screen for BLOCK_SPACING before MarkCandidates: the same test on a spatial sample of

@@ -9,6 +9,9 @@
 #include "vtkFeaturePointsVertexCells.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
+#include "vtkPointCloudLASReader.h"
+#include "vtkPointCloudPCDReader.h"
+#include "vtkPointCloudPCDWriter.h"
 #include "vtkPointCloudPLYReader.h"
 #include "vtkPointCloudPLYWriter.h"
 #include "vtkPointCloudTextReader.h"
@@ -57,8 +60,11 @@ vtkStandardNewMacro(vtkPointCloudIO);
 
 namespace
 {
-const char* const ReadableExtensions[] = { "ply", "vtp", "vtu", "vtk", "pts", "xyz", "txt", "csv" };
-const char* const WritableExtensions[] = { "vtp", "vtk", "ply", "csv" };
+const char* const ReadableExtensions[] = { "ply", "vtp", "vtu", "vtk", "pts", "xyz", "txt", "csv",
+  "pcd", "las" };
+const char* const WritableExtensions[] = { "vtp", "vtk", "ply", "csv", "pcd" };
+// Known but not readable in this build: Read() says why in its one line.
+const char* const RecognizedExtensions[] = { "laz" };
 
 // Keeps the first message in `first`, except an executive's report that an algorithm failed (a
 // dump of the pipeline request, which says nothing of the cause): that one only when nothing else
@@ -319,6 +325,22 @@ vtkSmartPointer<vtkCellArray> vtkPointCloudIO::MakeVertexCells(vtkIdType n)
   return featurepoints::MakeVertexCells(n);
 }
 
+bool vtkPointCloudIO::MakeVertexCells(vtkIdType n, vtkCellArray* cells)
+{
+  if (!cells)
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkCellArray> verts = n >= 0 ? MakeVertexCells(n) : nullptr;
+  if (!verts)
+  {
+    cells->Initialize();
+    return false;
+  }
+  cells->ShallowCopy(verts);
+  return true;
+}
+
 std::string vtkPointCloudIO::GetExtension(const std::string& fileName)
 {
   const size_t slash = fileName.find_last_of('/');
@@ -337,7 +359,9 @@ std::string vtkPointCloudIO::GetExtension(const std::string& fileName)
 bool vtkPointCloudIO::CanRead(const std::string& extension)
 {
   return std::find(std::begin(ReadableExtensions), std::end(ReadableExtensions), extension) !=
-    std::end(ReadableExtensions);
+    std::end(ReadableExtensions) ||
+    std::find(std::begin(RecognizedExtensions), std::end(RecognizedExtensions), extension) !=
+    std::end(RecognizedExtensions);
 }
 
 bool vtkPointCloudIO::CanWrite(const std::string& extension)
@@ -440,6 +464,29 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
                    : ReadWithReader(fileName, extension, error, observer);
 }
 
+bool vtkPointCloudIO::ReadPolyData(
+  const std::string& fileName, vtkPolyData* output, std::string& error, vtkCommand* observer)
+{
+  if (!output)
+  {
+    error = fileName + ": no polydata to read into";
+    return false;
+  }
+  vtkSmartPointer<vtkPointSet> cloud = Read(fileName, error, observer);
+  if (!cloud)
+  {
+    output->Initialize();
+    return false;
+  }
+  output->ShallowCopy(AsPolyData(cloud));
+  if (output->GetNumberOfCells() == 0 && output->GetNumberOfPoints() > 0)
+  {
+    // Points alone (a .vtp or .vtk cloud written without cells): vertices, so that it renders.
+    output->SetVerts(MakeVertexCells(output->GetNumberOfPoints()));
+  }
+  return true;
+}
+
 vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& fileName,
   const std::string& extension, std::string& error, vtkCommand* observer)
 {
@@ -447,6 +494,19 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
   if (extension == "ply")
   {
     auto r = vtkSmartPointer<vtkPointCloudPLYReader>::New();
+    r->SetFileName(fileName.c_str());
+    reader = r;
+  }
+  else if (extension == "pcd")
+  {
+    auto r = vtkSmartPointer<vtkPointCloudPCDReader>::New();
+    r->SetFileName(fileName.c_str());
+    reader = r;
+  }
+  else if (extension == "las" || extension == "laz")
+  {
+    // A .laz file gets the reader's one-line reason why it cannot be read.
+    auto r = vtkSmartPointer<vtkPointCloudLASReader>::New();
     r->SetFileName(fileName.c_str());
     reader = r;
   }
@@ -510,8 +570,7 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
   if (!updated || !message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const unsigned long code = reader->GetErrorCode();
-    const bool ours = extension == "ply" || extension == "pts" || extension == "xyz" ||
-      extension == "txt" || extension == "csv";
+    const bool ours = extension != "vtp" && extension != "vtu" && extension != "vtk";
     error = WithFile(fileName,
       !message.empty() ? (ours ? message : "cannot read: " + message)
         : code != vtkErrorCode::NoError
@@ -836,6 +895,14 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
     w->SetInputData(AsPolyData(data));
     w->SetFileName(temporary.c_str());
     w->SetFileTypeToBinary();
+    writer = w;
+    write = [w]() { return w->Write(); };
+  }
+  else if (extension == "pcd")
+  {
+    auto w = vtkSmartPointer<vtkPointCloudPCDWriter>::New();
+    w->SetInputData(data);
+    w->SetFileName(temporary.c_str());
     writer = w;
     write = [w]() { return w->Write(); };
   }

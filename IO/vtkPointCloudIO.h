@@ -8,14 +8,26 @@
  * - `.vtp`, `.vtu`: vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader.
  * - `.vtk`: vtkDataSetReader (legacy VTK); the file must hold a point set.
  * - `.pts`, `.xyz`, `.txt`, `.csv`: vtkPointCloudTextReader.
+ * - `.pcd`: vtkPointCloudPCDReader (ascii, binary, binary_compressed; every field kept).
+ * - `.las`: vtkPointCloudLASReader (LAS 1.0-1.4, point formats 0-10, double coordinates).
+ * - `.laz` is recognized (CanRead() is true, so that a program passes it on) but not listed as
+ *   readable: Read() fails with one line saying that this build has no LASzip.
  *
  * Writing: `.vtp` (vtkXMLPolyDataWriter, binary, compressed), `.vtk` (vtkPolyDataWriter, binary),
  * `.ply` (vtkPointCloudPLYWriter, binary, every numeric point array as a vertex property), `.csv`
- * (vtkPointCloudTextWriter). Write() never leaves a partial file: it writes to a temporary file
+ * (vtkPointCloudTextWriter), `.pcd` (vtkPointCloudPCDWriter, binary, every numeric point array as
+ * a field). Write() never leaves a partial file: it writes to a temporary file
  * in the target's folder and renames it over the target only when the writer succeeded.
  *
- * @sa vtkPointCloudPLYReader vtkPointCloudPLYWriter vtkPointCloudTextReader
- * vtkPointCloudTextWriter
+ * In a pipeline, and from Python, vtkPointCloudReader and vtkPointCloudWriter do the same as
+ * algorithms. Read() and MakeVertexCells() return smart pointers, which VTK's wrappers cannot
+ * pass: they are C++ only, and ReadPolyData() and MakeVertexCells(n, cells) are their wrapped
+ * counterparts. Methods with a `std::string& error` take a `vtkmodules.vtkCommonCore.reference`
+ * from Python.
+ *
+ * @sa vtkPointCloudReader vtkPointCloudWriter vtkPointCloudPLYReader vtkPointCloudPLYWriter
+ * vtkPointCloudTextReader vtkPointCloudTextWriter vtkPointCloudPCDReader vtkPointCloudPCDWriter
+ * vtkPointCloudLASReader
  */
 #ifndef vtkPointCloudIO_h
 #define vtkPointCloudIO_h
@@ -30,6 +42,7 @@ class vtkAlgorithm;
 class vtkCellArray;
 class vtkCommand;
 class vtkPointSet;
+class vtkPolyData;
 
 class FEATUREPOINTSIO_EXPORT vtkPointCloudIO : public vtkObject
 {
@@ -41,7 +54,10 @@ public:
   static std::string GetExtension(const std::string& fileName);
 
   ///@{
-  /** Whether an extension (as GetExtension returns it) can be read or written. */
+  /**
+   * Whether an extension (as GetExtension returns it) can be read or written. CanRead() is also
+   * true for `laz`, which Read() refuses with a message that says why.
+   */
   static bool CanRead(const std::string& extension);
   static bool CanWrite(const std::string& extension);
   ///@}
@@ -56,9 +72,18 @@ public:
    * Reads a point cloud. Returns nullptr and sets `error` (one line, starting with the file name)
    * when the file is missing, unreadable, of an unknown extension, malformed or not a point set.
    * `observer`, if given, is added to the reader for its ProgressEvent.
+   * C++ only (a smart pointer): ReadPolyData() is the wrapped counterpart.
    */
-  static vtkSmartPointer<vtkPointSet> Read(
+  VTK_WRAPEXCLUDE static vtkSmartPointer<vtkPointSet> Read(
     const std::string& fileName, std::string& error, vtkCommand* observer = nullptr);
+
+  /**
+   * Read() into `output`: the cloud's points and point data, its cells when it is polydata with
+   * cells, one vertex cell per point otherwise (points alone, a .vtu or .vtk unstructured grid). Returns false, with
+   * `output` emptied and `error` set as by Read(), on any failure.
+   */
+  static bool ReadPolyData(const std::string& fileName, vtkPolyData* output, std::string& error,
+    vtkCommand* observer = nullptr);
 
   ///@{
   /**
@@ -109,11 +134,15 @@ public:
    */
   static void RemoveTemporaryFileInProgress();
 
+  ///@{
   /**
-   * One vertex cell per point, 0 to n-1, with 32-bit storage when n allows (nullptr when the
-   * memory cannot be had). The same cells as vtkPointCloudNeighborhoods::MakeVertexCells().
+   * One vertex cell per point, 0 to n-1, with 32-bit storage when n allows: a new cell array
+   * (nullptr when the memory cannot be had; C++ only), or into `cells` (false, `cells` left empty,
+   * when the memory cannot be had). The same cells as vtkPointCloudNeighborhoods::MakeVertexCells().
    */
-  static vtkSmartPointer<vtkCellArray> MakeVertexCells(vtkIdType n);
+  VTK_WRAPEXCLUDE static vtkSmartPointer<vtkCellArray> MakeVertexCells(vtkIdType n);
+  static bool MakeVertexCells(vtkIdType n, vtkCellArray* cells);
+  ///@}
 
   /** The message of a VTK error or warning event, without its "ERROR: In file, line" preamble. */
   static std::string MessageText(const char* vtkMessage);

@@ -1,17 +1,20 @@
 // featurepoints: feature points (sharp edges, creases, corners) of a point cloud file, from the
-// shell. Reads PLY, VTP, VTU, legacy VTK, PTS, XYZ/TXT or CSV; runs the project's default detector
-// (crease: two-plane crease fits and a neighbourhood vote), the paper's method (huang2023: Huang et
-// al. 2023) or one of its baselines; writes the cloud with its scores and FeatureMask as VTP, VTK,
-// PLY or CSV; optionally renders a picture offscreen. `featurepoints --help` lists every option.
+// shell. Reads PLY, VTP, VTU, legacy VTK, PTS, XYZ/TXT, CSV, PCD or LAS; runs the project's
+// default detector (crease: two-plane crease fits and a neighbourhood vote), the paper's method
+// (huang2023: Huang et al. 2023) or one of its baselines; writes the cloud with its scores and
+// FeatureMask as VTP, VTK, PLY, CSV or PCD; optionally renders a picture offscreen.
+// `featurepoints --help` lists every option.
 //
 // Exit codes: 0 success; 1 bad input or failure (one line naming the file and the problem);
 // 2 bad usage. A failed run leaves no output file behind and the input is never overwritten.
 #include "vtkActor.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
 #include "vtkFeatureCurveExtraction.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkFieldData.h"
@@ -22,6 +25,7 @@
 #include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointCloudIO.h"
+#include "vtkPointCloudReader.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -322,8 +326,9 @@ const std::vector<FilterOption>& FilterOptions()
     { "thin", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
       [](vtkFeaturePointDetector* f, double) { Crease(f)->ThinFeaturesOn(); },
       [](vtkFeaturePointDetector* f) { return double(Crease(f)->GetThinFeatures()); },
-      "one point wide: across each crease only the points nearest its fitted line, across each "
-      "border the outermost row (without it, a band about twice --band-width spacings wide)",
+      "one point wide: only the points within half a spacing of each crease (widened by the "
+      "noise), across each border the outermost row (without it, a band about twice "
+      "--band-width spacings wide)",
       true },
     { "no-borders", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
       [](vtkFeaturePointDetector* f, double) { Crease(f)->BordersOff(); },
@@ -456,9 +461,12 @@ void PrintHelp()
     "the paper's method (Huang, Chen, Zhang, Lu 2023).\n"
     "\n"
     "INPUT   %s (PLY: ASCII or binary, any vertex\n"
-    "        properties, faces ignored; CSV/XYZ/TXT: with or without a header line)\n"
+    "        properties, faces ignored; CSV/XYZ/TXT: with or without a header line; PCD: ascii,\n"
+    "        binary or binary_compressed, every field, NaN points skipped; LAS 1.0-1.4: point\n"
+    "        formats 0-10, uncompressed: LAZ is not supported in this build, it has no LASzip)\n"
     "OUTPUT  %s (VTP/VTK: every array; PLY: coordinates and every\n"
-    "        numeric array as vertex properties; CSV: a header line, then one line per point)\n"
+    "        numeric array as vertex properties; CSV: a header line, then one line per point;\n"
+    "        PCD: binary, every numeric array as a field)\n"
     "\n"
     "General options:\n"
     "  --method NAME         the method (default %s):\n",
@@ -1407,13 +1415,17 @@ private:
     const Settings& s = this->S;
     this->Meter->Stage("reading");
     const auto start = Clock::now();
-    std::string error;
-    this->Cloud = vtkPointCloudIO::Read(s.Input, error, this->Meter);
+    this->Reader->SetFileName(s.Input.c_str());
+    this->Reader->AddObserver(vtkCommand::ProgressEvent, this->Meter);
+    vtkNew<vtkCallbackCommand> keepError; // the reader's error is reported below, once
+    this->Reader->AddObserver(vtkCommand::ErrorEvent, keepError);
+    this->Reader->Update();
     this->Meter->Finish();
-    if (!this->Cloud)
+    if (this->Reader->GetErrorCode() != vtkErrorCode::NoError)
     {
-      Fail(ExitFailure, error);
+      Fail(ExitFailure, this->Reader->GetErrorMessage());
     }
+    this->Cloud = this->Reader->GetOutput();
     this->Times.emplace_back("read", Seconds(start));
     const vtkIdType n = this->Cloud->GetNumberOfPoints();
     if (n == 0)
@@ -1679,6 +1691,7 @@ private:
   const Method* M;
   vtkNew<Progress> Meter; // progress on the terminal
   std::vector<std::pair<std::string, double>> Times;
+  vtkNew<vtkPointCloudReader> Reader;
   vtkSmartPointer<vtkPointSet> Cloud;
   vtkSmartPointer<vtkFeaturePointDetector> Filter;
   vtkPolyData* Result = nullptr;

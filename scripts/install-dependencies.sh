@@ -5,7 +5,8 @@
 # The two cannot be installed together (libvtk9-dev needs python3-vtk9, which conflicts with
 # python3-paraview): each mode removes what conflicts with it. README.md, "ParaView plugin".
 set -euo pipefail
-common=(cmake g++ make libeigen3-dev xvfb xauth)
+# liblzf-dev: PCD's binary_compressed data (the IO module, built in both modes).
+common=(cmake g++ make libeigen3-dev liblzf-dev xvfb xauth)
 if [ "${1:-}" = "--paraview" ]; then
   # paraview-dev's CMake package finds Qt 5 and the system libraries its bundled VTK was built
   # with, but depends on none of their -dev packages: they are listed here.
@@ -19,7 +20,8 @@ if [ "${1:-}" = "--paraview" ]; then
     zlib1g-dev)
   conflicting=(libvtk9-dev python3-vtk9)
 else
-  packages=("${common[@]}" libvtk9-dev)
+  # python3-vtk9 (a dependency of libvtk9-dev) and these: the Python package and its tests.
+  packages=("${common[@]}" libvtk9-dev python3-numpy python3-pytest)
   conflicting=(paraview-dev python3-paraview)
 fi
 missing=()

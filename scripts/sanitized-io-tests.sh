@@ -8,4 +8,4 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug \
   "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 cmake --build build-asan -j --target FeaturePointsIOCxxTests
 ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --test-dir build-asan -R 'FeaturePoints::TestPointCloud(PLY|Text|IO|IOFuzz|IOConcurrent)$' --output-on-failure
+  ctest --test-dir build-asan -R 'FeaturePoints::TestPointCloud(PLY|Text|PCD|LAS|IO|IOFuzz|IOConcurrent|ReaderWriter)$' --output-on-failure

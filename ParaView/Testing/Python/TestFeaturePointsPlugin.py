@@ -5,17 +5,19 @@
 Loads the plugin, checks the server-manager XML (menu category, documentation on every
 property, input restricted to point sets), runs every detector on the synthetic cloud of
 REFERENCE (written by the plain VTK build's test TestFeaturePointsReference) and compares the
-arrays, the number of feature points and the feature point ids; shows the main filter (it must
-come up as points coloured by F), saves a screenshot and compares it with BASELINE.png.
+arrays, the number of feature points and the feature point ids; writes a small grid as .xyz,
+.pcd and .las, checks that File > Open offers the plugin's Point Cloud Reader for each (and picks
+it for the .pcd) and that it reads their points and columns; shows the main filter (it must come up as points coloured by
+F), saves a screenshot and compares it with BASELINE.png.
 Exits 1 on any failed check.
 """
 import os
+import struct
 import sys
 
 from paraview import servermanager
-from paraview.simple import (CreateRenderView, LoadPlugin, Render, ResetCamera, SaveScreenshot,
-                             Wavelet,
-                             Show)
+from paraview.simple import (CreateRenderView, LoadPlugin, OpenDataFile, Render, ResetCamera,
+                             SaveScreenshot, Wavelet, Show)
 
 plugin, reference_file, baseline, folder = sys.argv[1:5]
 failures = []
@@ -59,6 +61,100 @@ for group, name in [("filters", n) for n in proxies] + [("sources", "FeatureMode
     if group == "filters":
         domain = proto.GetProperty("Input").GetDomain("input_type")
         check(domain.IsInDomain(wavelet.SMProxy, 0) == 0, "%s accepts an image" % name)
+
+# The reader: File > Open of a .xyz file picks the plugin's Point Cloud Reader (the reader
+# factory's choice by extension, as in the GUI), which reads every point and every column.
+proto = pxm.GetPrototypeProxy("sources", "PointCloudReader")
+check(proto is not None, "PointCloudReader: no proxy")
+factory = servermanager.vtkSMProxyManager.GetProxyManager().GetReaderFactory()
+factory.UpdateAvailableReaders()
+rows = [(0.5 * i, 0.25 * j, 0.125 * i * j, 10 * i + j) for i in range(5) for j in range(4)]
+
+
+# The same grid in three formats, written here: XYZ text, PCL's PCD (ascii) and LAS 1.2 (point
+# format 0, coordinates near 10^6 stored as integers with a scale of 0.001 and an offset).
+def write_pcd(path, rows):
+    with open(path, "w") as f:
+        f.write("# .PCD v0.7\nVERSION 0.7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\n"
+                "COUNT 1 1 1 1\nWIDTH %d\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS %d\nDATA ascii\n"
+                % (len(rows), len(rows)))
+        for row in rows:
+            f.write("%g %g %g %g\n" % row)
+def write_las(path, rows, offset=(500000.0, 4000000.0, 100.0), scale=0.001):
+    records = b"".join(struct.pack("<iiiHBBbBH", *[int(round((row[c] - offset[c]) / scale)) for c in range(3)],
+                                   int(row[3]), 0x09, 2, 0, 0, 0) for row in rows)
+    lo = [min(r[c] for r in rows) for c in range(3)]
+    hi = [max(r[c] for r in rows) for c in range(3)]
+    header = struct.pack("<4sHHIHH8sBB32s32sHHHIIBHI5I3d3d6d", b"LASF", 0, 0, 0, 0, 0, b"\0" * 8, 1, 2,
+                         b"FeaturePoints test", b"FeaturePoints test", 1, 2026, 227, 227, 0, 0, 20,
+                         len(rows), len(rows), 0, 0, 0, 0, scale, scale, scale, *offset,
+                         hi[0], lo[0], hi[1], lo[1], hi[2], lo[2])
+    assert len(header) == 227
+    with open(path, "wb") as f:
+        f.write(header + records)
+
+
+offset = (500000.0, 4000000.0, 100.0)
+cases = []
+cloud_file = os.path.join(folder, "TestFeaturePointsPlugin.xyz")
+with open(cloud_file, "w") as f:
+    f.write("# a 5 x 4 grid: x y z and one more column\n")
+    for row in rows:
+        f.write("%g %g %g %g\n" % row)
+cases.append((cloud_file, rows, "Field 3"))
+write_pcd(os.path.join(folder, "TestFeaturePointsPlugin.pcd"), rows)
+cases.append((os.path.join(folder, "TestFeaturePointsPlugin.pcd"), rows, "intensity"))
+las_rows = [(r[0] + offset[0], r[1] + offset[1], r[2] + offset[2], r[3]) for r in rows]
+write_las(os.path.join(folder, "TestFeaturePointsPlugin.las"), las_rows, offset)
+cases.append((os.path.join(folder, "TestFeaturePointsPlugin.las"), las_rows, "Intensity"))
+for extension in ["pts", "txt", "csv", "pcd", "las"]:
+    hint = proto.GetHints().FindNestedElementByName("ReaderFactory") if proto else None
+    check(hint is not None and extension in hint.GetAttribute("extensions").split(),
+          "PointCloudReader: .%s is not in its ReaderFactory extensions" % extension)
+session = servermanager.ActiveConnection.Session
+for path, expected, column_name in cases:
+    # File > Open offers the plugin's reader for the file (ParaView lets the user choose when
+    # several readers claim an extension, as its molecule reader does .xyz).
+    try:  # the readers that claim the file's extension
+        offered = factory.GetReaders(path, session)
+    except (AttributeError, TypeError):
+        offered = factory.GetPossibleReaders(path, session)
+    names = [offered.GetString(i) for i in range(offered.GetNumberOfStrings())] if offered else []
+    check("PointCloudReader" in names,
+          "File > Open does not offer the Point Cloud Reader for %s (offers %s)"
+          % (os.path.basename(path), names))
+    reader = globals()["PointCloudReader"](FileName=path)
+    cloud = servermanager.Fetch(reader)
+    column = cloud.GetPointData().GetArray(column_name)
+    points = [cloud.GetPoint(i) for i in range(cloud.GetNumberOfPoints())]
+    check(cloud.GetNumberOfPoints() == len(expected) and cloud.GetNumberOfVerts() == len(expected),
+          "PointCloudReader: %s: %d points and %d vertices, not %d"
+          % (os.path.basename(path), cloud.GetNumberOfPoints(), cloud.GetNumberOfVerts(),
+             len(expected)))
+    check(len(points) == len(expected) and
+          all(abs(p[c] - q[c]) < 1e-6 for p, q in zip(points, expected) for c in range(3)),
+          "PointCloudReader: %s: the points differ from the file's" % os.path.basename(path))
+    check(column is not None and [column.GetValue(i) for i in range(column.GetNumberOfTuples())]
+          == [r[3] for r in expected],
+          "PointCloudReader: %s: no point array '%s' with the file's values"
+          % (os.path.basename(path), column_name))
+    print("PointCloudReader: %s, %d points, arrays %s"
+          % (os.path.basename(path), cloud.GetNumberOfPoints(),
+             [cloud.GetPointData().GetArrayName(i)
+              for i in range(cloud.GetPointData().GetNumberOfArrays())]))
+# OpenDataFile asks the reader factory as File > Open does; no other reader claims .pcd.
+try:
+    opened = OpenDataFile(cases[1][0])
+except RuntimeError as error:
+    opened = None
+    print("OpenDataFile: %s" % error)
+check(opened is not None and opened.GetXMLName() == "PointCloudReader",
+      "File > Open of a .pcd file (OpenDataFile) made %s, not a PointCloudReader"
+      % (opened.GetXMLName() if opened is not None else "nothing"))
+missing = globals()["PointCloudReader"](FileName=os.path.join(folder, "missing.xyz"))
+missing.UpdatePipeline()
+check(servermanager.Fetch(missing).GetNumberOfPoints() == 0,
+      "PointCloudReader: a missing file gives points")
 
 # Results: the same as the plain VTK build's, for the same generated cloud.
 reference = {}

@@ -8,6 +8,7 @@
 // Every bad input must give its exit code (1 bad input or failure, 2 bad usage), a one-line
 // message naming the file and the problem, and leave no output file (nor a temporary one).
 #include "FeaturePointsTestFiles.h"
+#include "LASTestFile.h"
 
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkFeatureModelSource.h"
@@ -475,6 +476,59 @@ int main(int argc, char* argv[])
     filter->SetNumberOfNeighbors(20);
     CheckSameMask("vtp -> vtk, --method pca --k 20", filter, vtp, Path("pca.vtk"));
   }
+  // PCD in and out, LAS in (lidar-size coordinates: offsets of 5e5 and 4e6, steps of 0.1 mm):
+  // the same masks as the library on the same files.
+  {
+    const std::string pcd = Path("model.pcd");
+    Check(vtkPointCloudIO::Write(cloud, pcd, error), "write model.pcd: " + error);
+    const Run in = Execute({ pcd, Path("from-pcd.vtp") });
+    Check(in.Code == 0 && in.Out.find(": 20000 points") != std::string::npos,
+      "pcd -> vtp: exit code " + std::to_string(in.Code) + ": " + in.Out + in.Err);
+    vtkNew<vtkCreaseVotingFeatures> filter;
+    CheckSameMask("pcd -> vtp, default method", filter, pcd, Path("from-pcd.vtp"));
+    const Run out = Execute({ vtp, Path("to-pcd.pcd") });
+    Check(out.Code == 0, "vtp -> pcd: exit code " + std::to_string(out.Code) + ": " + out.Err);
+    Check(Slurp(Path("to-pcd.pcd")).find("\nDATA binary\n") != std::string::npos &&
+        Slurp(Path("to-pcd.pcd")).find(" FeatureMask") != std::string::npos,
+      "vtp -> pcd: binary PCD with a FeatureMask field");
+    CheckSameMask("vtp -> pcd, default method", filter, vtp, Path("to-pcd.pcd"));
+
+    using namespace featurepoints::lastest;
+    File las;
+    las.Minor = 4;
+    las.Format = 6;
+    las.Scale[0] = las.Scale[1] = las.Scale[2] = 1e-4;
+    las.Offset[0] = 500000;
+    las.Offset[1] = 4000000;
+    las.Offset[2] = 100;
+    for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      cloud->GetPoint(i, x);
+      las.Points.push_back({ static_cast<int32_t>(std::lround(x[0] * 1e4)),
+        static_cast<int32_t>(std::lround(x[1] * 1e4)), static_cast<int32_t>(std::lround(x[2] * 1e4)),
+        static_cast<uint16_t>(i % 60000), 1, 1, 2, 1e5 + i, 0, 0, 0, 0 });
+    }
+    const std::string lasPath = Path("model.las");
+    Spit(lasPath, Bytes(las));
+    const Run lidar = Execute({ lasPath, Path("from-las.vtp") });
+    Check(lidar.Code == 0 && lidar.Out.find(": 20000 points") != std::string::npos,
+      "las -> vtp: exit code " + std::to_string(lidar.Code) + ": " + lidar.Out + lidar.Err);
+    CheckSameMask("las (coordinates near 4e6) -> vtp, default method", filter, lasPath,
+      Path("from-las.vtp"));
+    vtkSmartPointer<vtkPointSet> read = vtkPointCloudIO::Read(Path("from-las.vtp"), error);
+    double first[3] = { 0, 0, 0 }, model[3];
+    if (read && read->GetNumberOfPoints() > 0)
+    {
+      read->GetPoint(0, first);
+    }
+    cloud->GetPoint(0, model);
+    Check(read && read->GetPointData()->GetArray("Intensity") &&
+        read->GetPointData()->GetArray("GpsTime") &&
+        std::fabs(first[1] - (4000000 + std::lround(model[1] * 1e4) * 1e-4)) < 1e-6,
+      "las -> vtp: Intensity, GpsTime and the double coordinates kept");
+  }
+
   // --features-only: the feature points, their ids in the input (default method, as default.vtp).
   {
     const Run run = Execute({ vtp, Path("features.vtp"), "--features-only" });

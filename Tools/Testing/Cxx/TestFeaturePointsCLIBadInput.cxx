@@ -4,9 +4,11 @@
 //
 // Huge declared counts, stacks of coincident points, files of 100,000 columns, cut or corrupt
 // legacy VTK files, clouds scaled to 1e-300 and 1e300, signals during the run, a FIFO, VTK's
-// many-line errors, a dropped column, oversized pictures and thread counts. Each case checks its
+// many-line errors, a dropped column, oversized pictures and thread counts, PCD and LAS files that
+// are cut, lie about their counts, sizes or types, or are compressed LAS (LAZ). Each case checks its
 // exit code, its one-line message, its time, and that no file is left behind.
 #include "FeaturePointsTestFiles.h"
+#include "LASTestFile.h"
 
 #include "vtkFeatureModelSource.h"
 #include "vtkNew.h"
@@ -30,6 +32,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <set>
 #include <sstream>
@@ -578,6 +581,103 @@ void KeptColumns()
   ::unlink(Path("delimited.vtp").c_str());
 }
 
+// PCD and LAS: cut, lying or compressed files end in one line, at once; an organized PCD cloud's
+// NaN points are skipped with a warning.
+void NewFormats()
+{
+  vtkNew<vtkFeatureModelSource> source;
+  source->SetModel(1);
+  source->SetNumberOfPoints(2000);
+  source->Update();
+  vtkPoints* points = source->GetOutput()->GetPoints();
+  const vtkIdType n = points->GetNumberOfPoints();
+
+  // An organized 50 x 40 cloud, every tenth point invalid (NaN), as PCL writes it.
+  std::string body;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    const float v[4] = { i % 10 == 9 ? nan : static_cast<float>(x[0]), static_cast<float>(x[1]),
+      static_cast<float>(x[2]), static_cast<float>(i) };
+    body.append(reinterpret_cast<const char*>(v), sizeof(v));
+  }
+  const std::string fields = "VERSION 0.7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\n"
+                             "COUNT 1 1 1 1\n";
+  Spit(Path("organized.pcd"),
+    fields + "WIDTH 50\nHEIGHT 40\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 2000\nDATA binary\n" + body);
+  const Run organized = ExpectSuccess("organized PCD", { Path("organized.pcd"), Path("o.vtp") });
+  Check(organized.Out.find(": 1800 points") != std::string::npos &&
+      organized.Err.find("featurepoints: warning: ") != std::string::npos &&
+      organized.Err.find("200 of 2000 points skipped") != std::string::npos,
+    "organized PCD: 1800 points read, 200 skipped with a warning: " + organized.Out + organized.Err);
+  ::unlink(Path("o.vtp").c_str());
+
+  Spit(Path("cut.pcd"),
+    fields + "WIDTH 2000\nHEIGHT 1\nPOINTS 2000\nDATA binary\n" + body.substr(0, body.size() / 2));
+  ExpectFailure("cut binary PCD", { Path("cut.pcd"), Path("o.vtp") }, 1,
+    "cut.pcd: the file ends in point 1001 of 2000", 5.0);
+  Spit(Path("huge.pcd"),
+    fields + "WIDTH 1000000000000\nHEIGHT 1\nPOINTS 1000000000000\nDATA binary\n" + body);
+  ExpectFailure("PCD declaring 10^12 points", { Path("huge.pcd"), Path("o.vtp") }, 1,
+    "huge.pcd: the file ends in point 2001 of 1000000000000", 5.0);
+  Spit(Path("lying.pcd"),
+    fields + "WIDTH 2000\nHEIGHT 1\nPOINTS 3000\nDATA binary\n" + body);
+  ExpectFailure("PCD POINTS other than WIDTH x HEIGHT", { Path("lying.pcd"), Path("o.vtp") }, 1,
+    "lying.pcd:8: POINTS 3000 is not WIDTH x HEIGHT (2000 x 1)", 5.0);
+  Spit(Path("type.pcd"),
+    "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F D\nWIDTH 1\nPOINTS 1\nDATA ascii\n1 2 3\n");
+  ExpectFailure("PCD unknown type", { Path("type.pcd"), Path("o.vtp") }, 1,
+    "type.pcd:4: field 'z': unknown type 'D' of size 4", 5.0);
+  // 10^8 points declared by 8 bytes of compressed data: refused before any allocation.
+  const uint32_t sizes[2] = { 8, 1600000000 }; // compressed, uncompressed (10^8 x 16 bytes)
+  Spit(Path("bomb.pcd"),
+    fields + "WIDTH 100000000\nPOINTS 100000000\nDATA binary_compressed\n" +
+      std::string(reinterpret_cast<const char*>(sizes), 8) + std::string(8, '\0'));
+  ExpectFailure("PCD compression bomb", { Path("bomb.pcd"), Path("o.vtp") }, 1,
+    "bomb.pcd: the compressed data cannot hold 100000000 points", 5.0);
+
+  using namespace featurepoints::lastest;
+  File las;
+  las.Format = 3;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    las.Points.push_back({ static_cast<int32_t>(x[0] * 100), static_cast<int32_t>(x[1] * 100),
+      static_cast<int32_t>(x[2] * 100), 0, 1, 1, 2, 0.0, 0, 0, 0, 0 });
+  }
+  const std::string lasBytes = Bytes(las);
+  Spit(Path("cut.las"), lasBytes.substr(0, lasBytes.size() - 10));
+  ExpectFailure("cut LAS", { Path("cut.las"), Path("o.vtp") }, 1,
+    "cut.las: the header declares 2000 points of 34 bytes from byte 227, but the file (68217 "
+    "bytes) holds 1999",
+    5.0);
+  File huge = las;
+  huge.Minor = 4;
+  huge.DeclaredPoints = uint64_t(1) << 40;
+  Spit(Path("huge.las"), Bytes(huge));
+  ExpectFailure("LAS 1.4 declaring 2^40 points", { Path("huge.las"), Path("o.vtp") }, 1,
+    "huge.las: the header declares 1099511627776 points", 5.0);
+  File format = las;
+  format.FormatByte = 12;
+  Spit(Path("format.las"), Bytes(format));
+  ExpectFailure("LAS point format 12", { Path("format.las"), Path("o.vtp") }, 1,
+    "format.las: unsupported point data record format 12 (0 to 10 are read)", 5.0);
+  Spit(Path("cloud.laz"), lasBytes);
+  ExpectFailure("LAZ", { Path("cloud.laz"), Path("o.vtp") }, 1,
+    "cloud.laz: compressed LAS (LAZ) is not supported in this build", 5.0);
+  Spit(Path("good.las"), lasBytes);
+  const Run good = ExpectSuccess("LAS format 3", { Path("good.las"), Path("o.vtp") });
+  Check(good.Out.find(": 2000 points") != std::string::npos, "LAS format 3: " + good.Out);
+  for (const char* name : { "organized.pcd", "cut.pcd", "huge.pcd", "lying.pcd", "type.pcd",
+         "bomb.pcd", "cut.las", "huge.las", "format.las", "cloud.laz", "good.las", "o.vtp" })
+  {
+    ::unlink(Path(name).c_str());
+  }
+}
+
 void Options()
 {
   Spit(Path("small.xyz"), ModelText(1, 2000, 1.0));
@@ -612,6 +712,7 @@ int main(int argc, char* argv[])
   Signals();
   OneLineErrors();
   KeptColumns();
+  NewFormats();
   Options();
   std::printf("bad input cases done in %.1f s, %d failure(s)\n",
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), Failures);
