@@ -31,9 +31,18 @@ constexpr double NoiseFloor = 0.05;
 constexpr int MaximumRounds = 8;
 // Rounds of the refit by side of the crease line.
 constexpr int SideRounds = 3;
-// A hinge whose residual exceeds this many times the noise variance per degree of freedom does
-// not describe the neighbourhood.
-constexpr double HingeMisfit = 2.0;
+// A model explains a neighbourhood when its residual, in noise variances, stays within
+// MisfitSigmas standard deviations of what noise alone leaves: a chi-square over the degrees of
+// freedom, dof + MisfitSigmas sqrt(2 dof) (exceeded by pure noise with probability about 1e-3).
+// A fixed multiple of dof would let a wrong model (one hinge through two creases a few
+// spacings apart, a crease cut by a wall's other side) explain 150 noisy points: there the
+// misfit of the few points it does not fit hides in a bound twice the noise.
+constexpr double MisfitSigmas = 3.0;
+inline double MisfitBound(int dof)
+{
+  const double n = std::max(dof, 1);
+  return n + MisfitSigmas * std::sqrt(2.0 * n);
+}
 // Two planes of the nearest-plane fit within 10 degrees of parallel and more than 4 times their
 // residual's RMS apart at the fitted point are two sheets (a thin wall), not a crease: a split of
 // pure Gaussian noise puts its planes 2.7 RMS apart.
@@ -767,7 +776,7 @@ void CreaseRun::FitCreases(const float* normal)
 inline bool Explains(const CreaseFit& f, double variance)
 {
   return std::min(std::min(f.RSSQ, f.Hinge.RSS2), f.Cross.RSS2) <=
-    HingeMisfit * std::max(f.Points - 6, 0) * variance;
+    MisfitBound(f.Points - 6) * variance;
 }
 
 void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* detail)
@@ -775,11 +784,14 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
   vtkSMPThreadLocal<Scratch> scratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     Scratch& s = scratch.Local();
-    // Whether the curved hinge explains the gathered points within `misfit` noise variances per
-    // degree of freedom (two quadrics: 12).
-    auto curvedExplains = [&](const CreaseFit& fit, double misfit) {
+    // Whether the curved hinge explains the gathered points (two quadrics: 12 parameters),
+    // within the noise or, with `detail`, within DetailMisfit noise variances per degree of
+    // freedom.
+    auto curvedExplains = [&](const CreaseFit& fit, bool detail) {
       const double curved = FitCurvedHinge(s.P, fit.Hinge, s.Side);
-      return curved >= 0.0 && curved <= misfit * std::max(fit.Points - 12, 0) * this->Variance;
+      const double bound = detail ? DetailMisfit * std::max(fit.Points - 12, 0)
+                                  : MisfitBound(fit.Points - 12);
+      return curved >= 0.0 && curved <= bound * this->Variance;
     };
     for (vtkIdType r = begin; r < end; ++r)
     {
@@ -794,7 +806,9 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
       // fit only within the faces' curvature, never within the noise of a clean cloud.
       CreaseFit fit, curvedFit;
       int curvedScale = 0;
-      for (int scale = this->KFit / 2; scale >= smallest; scale /= 2)
+      // Scales KFit / 2, KFit / 4, ... down to `smallest` itself.
+      for (int scale = std::max(this->KFit / 2, smallest); scale >= smallest && scale < this->KFit;
+           scale = scale > smallest ? std::max(scale / 2, smallest) : 0)
       {
         this->GatherSheet(r, scale, normal, s);
         fit = FitGathered(s);
@@ -804,7 +818,7 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
           this->Scale[r] = scale;
           break;
         }
-        if (curvedScale == 0 && curvedExplains(fit, HingeMisfit))
+        if (curvedScale == 0 && curvedExplains(fit, false))
         {
           curvedFit = fit;
           curvedScale = scale;
@@ -825,7 +839,7 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
       const double dof = std::max(fit.Points - 6, 0);
       if (std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), fit.Cross.RSS2) >
           DetailMisfit * dof * this->Variance &&
-        !curvedExplains(fit, DetailMisfit))
+        !curvedExplains(fit, true))
       {
         detail[this->Ids[r]] = 1;
       }
@@ -836,14 +850,14 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
 void CreaseRun::ChooseModels(float* gain, float* angle)
 {
   this->Gain.resize(static_cast<size_t>(this->Rows));
-  // Model choice: the hinge, unless it leaves more than HingeMisfit times the noise (surfaces
+  // Model choice: the hinge, unless it leaves more than the noise explains (surfaces
   // crossing, corners, strongly curved patches); then the crossing planes, as fitted. The chosen
   // model replaces the hinge in place: from here on Fits[r].Hinge is the fit that votes.
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
     CreaseFit& f = this->Fits[r];
     f.Explained = Explains(f, this->Variance);
-    if (f.Hinge.RSS2 > HingeMisfit * std::max(f.Points - 6, 0) * this->Variance &&
+    if (f.Hinge.RSS2 > MisfitBound(f.Points - 6) * this->Variance &&
       f.Cross.RSS2 < f.Hinge.RSS2)
     {
       f.Hinge = f.Cross;

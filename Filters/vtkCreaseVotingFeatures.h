@@ -35,8 +35,9 @@
  *    (curvature is explained at that scale, creases touch few points), never below (0.05 d)^2,
  *    d being the mean spacing.
  * 2b. Scale per point (MultiScale). Where neither the quadric, the hinge nor the crossing planes
- *    explain the k nearest within twice sigma^2 per degree of freedom (two creases, a groove, a
- *    small face in view), the neighbourhood is halved (k/2, k/4, not below 20 points) until one
+ *    explain the k nearest within the noise (a residual of at most dof + 3 sqrt(2 dof) times
+ *    sigma^2 for dof degrees of freedom: two creases, a groove, a small face in view), the
+ *    neighbourhood is halved (k/2, k/4, ..., and last 20 points) until one
  *    does; that point's fit and vote use that many neighbours. Where none does at any scale, the
  *    largest scale whose curved hinge explains them (each side of the hinge's line its own
  *    quadric, turning by at most a radian over the side's radius: a crease between curved
@@ -127,7 +128,7 @@ public:
   ///@{
   /**
    * Scale per point. Default on. Where the hinge of the NumberOfNeighbors nearest leaves more
-   * than twice the noise per degree of freedom (two creases, a groove, a small face in view),
+   * than the noise explains (two creases, a groove, a small face in view),
    * the neighbourhood is halved until its hinge explains it, down to 20 points; that point's
    * fit and vote then use that many neighbours.
    */
