@@ -1,5 +1,6 @@
 #include "vtkPointCloudPCDWriter.h"
 #include "vtkPointCloudPCDTypes.h"
+#include "vtkPointCloudFiles.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
@@ -32,14 +33,6 @@ using namespace featurepoints::pcd;
 
 namespace
 {
-bool HostIsBigEndian()
-{
-  const uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 0;
-}
-
 // The PCD type an array is written in; false for types PCD cannot hold.
 bool ChooseType(vtkDataArray* array, PcdType& type)
 {
@@ -347,7 +340,7 @@ void vtkPointCloudPCDWriter::WriteData()
   }
   bool ok = std::fwrite(header.data(), 1, header.size(), file) == header.size();
   std::string problem;
-  const bool swap = HostIsBigEndian();
+  const bool swap = featurepoints::HostIsBigEndian();
 
   if (ok && this->DataFormat == BINARY_COMPRESSED)
   {

@@ -1,5 +1,6 @@
 #include "vtkPointCloudPLYWriter.h"
 #include "vtkPointCloudPLYTypes.h"
+#include "vtkPointCloudFiles.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
@@ -337,7 +338,7 @@ void vtkPointCloudPLYWriter::WriteData()
   bool ok = std::fwrite(header.data(), 1, header.size(), file) == header.size();
 
   // Rows are packed a chunk at a time, then written as they are (binary) or as text.
-  const bool swap = HostIsBigEndian();
+  const bool swap = featurepoints::HostIsBigEndian();
   const vtkIdType rowsPerChunk = static_cast<vtkIdType>(std::max<size_t>(1, ChunkBytes / rowSize));
   std::vector<char> packed(static_cast<size_t>(std::min(n, rowsPerChunk)) * rowSize);
   std::vector<char> text(ascii
