@@ -4,7 +4,10 @@
 #ifndef vtkPointCloudFiles_h
 #define vtkPointCloudFiles_h
 
+#include "vtkAbstractArray.h"
+#include "vtkDataArray.h"
 #include "vtkErrorCode.h"
+#include "vtkPointData.h"
 
 #include <vtksys/FStream.hxx>
 #include <vtksys/SystemTools.hxx>
@@ -12,6 +15,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <set>
 #include <string>
 
 namespace featurepoints
@@ -100,6 +104,59 @@ inline unsigned long OpenReaderFile(
   }
   size = static_cast<uint64_t>(end);
   return vtkErrorCode::NoError;
+}
+
+// Whether `array` has `components` components and a tuple for each of n points (at least).
+inline bool FitsPoints(vtkDataArray* array, int components, vtkIdType n)
+{
+  return array && array->GetNumberOfComponents() == components && array->GetNumberOfTuples() >= n;
+}
+
+// The normals a writer writes: the point data's normals, else an array named "Normals", with 3
+// components and a tuple per point; nullptr when there are none.
+inline vtkDataArray* FindWritableNormals(vtkPointData* pd, vtkIdType n)
+{
+  vtkDataArray* normals = pd->GetNormals();
+  if (!FitsPoints(normals, 3, n))
+  {
+    normals = pd->GetArray("Normals");
+    normals = FitsPoints(normals, 3, n) ? normals : nullptr;
+  }
+  return normals;
+}
+
+// The point arrays a writer writes besides those in `written` (normals, colours): add(array) for
+// each numeric array that canWrite(array) accepts with a tuple per point; warn(text) for each
+// other one, with the file's name and why it is skipped.
+template <typename CanWrite, typename Add, typename Warn>
+void ForEachOtherPointArray(vtkPointData* pd, vtkIdType n, const std::string& fileName,
+  const std::set<vtkDataArray*>& written, CanWrite canWrite, Add add, Warn warn)
+{
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* abstract = pd->GetAbstractArray(i);
+    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
+    if (!abstract || (array && written.count(array)))
+    {
+      continue;
+    }
+    const std::string label = abstract->GetName() ? abstract->GetName() : "(unnamed)";
+    if (!array || !canWrite(array))
+    {
+      warn(fileName + ": array '" + label + "' (" + abstract->GetClassName() +
+        ") skipped: not numeric");
+      continue;
+    }
+    const int k = array->GetNumberOfComponents();
+    if (k < 1 || array->GetNumberOfTuples() < n)
+    {
+      warn(fileName + ": array '" + label + "' skipped: " +
+        std::to_string(array->GetNumberOfTuples()) + " tuples of " + std::to_string(k) +
+        " components for " + std::to_string(n) + " points");
+      continue;
+    }
+    add(array);
+  }
 }
 } // namespace featurepoints
 
