@@ -67,7 +67,9 @@ public:
    * vtkStaticPointLocator here (docs/design.md, "Neighbourhoods"), and the only one with which
    * ReorderSpatially() works. Any other locator is asked for each point in turn
    * (FindClosestNPoints); all give the same tables, ties in distance aside (the grid breaks them
-   * by the smaller point id). nullptr restores the default. Set before Build().
+   * by the smaller point id). nullptr restores the default. Set before Build(). The next Build(),
+   * and the destruction of this object, release the locator's search structure and data set, so
+   * that a locator a filter keeps holds no cloud between runs.
    */
   void SetLocator(vtkAbstractPointLocator* locator);
   vtkAbstractPointLocator* GetLocator() const;
