@@ -5,6 +5,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFeaturePointsLocalPCA.h"
 #include "vtkFeaturePointsStatistics.h"
+#include "vtkFeaturePointsTables.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -1176,31 +1177,9 @@ void vtkPointCloudGridLocator::PrintSelf(ostream& os, vtkIndent indent)
 bool vtkPointCloudGridLocator::FindNearestNeighbors(
   int k, vtkIdList* ids, vtkIntArray* table, vtkDoubleArray* nearestDistances)
 {
-  if (!table || k < 1)
-  {
-    return false;
-  }
-  std::vector<vtkIdType> rows;
-  if (ids)
-  {
-    rows.assign(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfIds());
-  }
-  std::vector<int32_t> entries;
-  std::vector<double> nearest;
-  if (!this->FindNearestNeighbors(k, rows, entries, nearestDistances ? &nearest : nullptr))
-  {
-    return false;
-  }
-  table->SetNumberOfComponents(k);
-  table->SetNumberOfTuples(static_cast<vtkIdType>(rows.size()));
-  std::copy(entries.begin(), entries.end(), table->GetPointer(0));
-  if (nearestDistances)
-  {
-    nearestDistances->SetNumberOfComponents(1);
-    nearestDistances->SetNumberOfValues(static_cast<vtkIdType>(nearest.size()));
-    std::copy(nearest.begin(), nearest.end(), nearestDistances->GetPointer(0));
-  }
-  return true;
+  return featurepoints::FindNearestNeighborsInArrays(k, ids, table, nearestDistances,
+    [&](const std::vector<vtkIdType>& rows, std::vector<int32_t>& entries,
+      std::vector<double>* nearest) { return this->FindNearestNeighbors(k, rows, entries, nearest); });
 }
 
 vtkPoints* vtkPointCloudGridLocator::ReorderSpatially(vtkIntArray* originalIds)

@@ -6,6 +6,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFeaturePointsLocalPCA.h"
 #include "vtkFeaturePointsStatistics.h"
+#include "vtkFeaturePointsTables.h"
 #include "vtkFeaturePointsVertexCells.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
@@ -537,18 +538,7 @@ void vtkPointCloudNeighborhoods::PrintSelf(ostream& os, vtkIndent indent)
 
 // The wrapped counterparts of the methods on std::vector tables and bare pointers (see the header):
 // copies between VTK arrays and the C++ ones.
-namespace
-{
-std::vector<vtkIdType> IdsOf(vtkIdList* list)
-{
-  std::vector<vtkIdType> ids;
-  if (list)
-  {
-    ids.assign(list->GetPointer(0), list->GetPointer(0) + list->GetNumberOfIds());
-  }
-  return ids;
-}
-} // namespace
+using featurepoints::IdsOf;
 
 bool vtkPointCloudNeighborhoods::MakeVertexCells(vtkIdType n, vtkCellArray* cells)
 {
@@ -613,25 +603,9 @@ double vtkPointCloudNeighborhoods::ComputeMeanSpacing(vtkIdList* ids, vtkIntArra
 bool vtkPointCloudNeighborhoods::FindNearestNeighbors(
   int k, vtkIdList* ids, vtkIntArray* table, vtkDoubleArray* nearestDistances)
 {
-  if (!table || k < 1)
-  {
-    return false;
-  }
-  const std::vector<vtkIdType> rows = IdsOf(ids);
-  std::vector<int32_t> entries;
-  std::vector<double> nearest;
-  if (!this->FindNearestNeighbors(k, rows, entries, nearestDistances ? &nearest : nullptr))
-  {
-    return false;
-  }
-  table->SetNumberOfComponents(k);
-  table->SetNumberOfTuples(static_cast<vtkIdType>(rows.size()));
-  std::copy(entries.begin(), entries.end(), table->GetPointer(0));
-  if (nearestDistances)
-  {
-    nearestDistances->SetNumberOfComponents(1);
-    nearestDistances->SetNumberOfValues(static_cast<vtkIdType>(nearest.size()));
-    std::copy(nearest.begin(), nearest.end(), nearestDistances->GetPointer(0));
-  }
-  return true;
+  return featurepoints::FindNearestNeighborsInArrays(k, ids, table, nearestDistances,
+    [&](const std::vector<vtkIdType>& rows, std::vector<int32_t>& entries,
+      std::vector<double>* nearest) {
+      return this->FindNearestNeighbors(k, rows, entries, nearest);
+    });
 }
