@@ -9,6 +9,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
+#include "vtkPointCloudGridLocator.h"
 #include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -24,8 +25,17 @@
 #include <cstring>
 #include <vector>
 
-vtkFeaturePointDetector::vtkFeaturePointDetector() = default;
-vtkFeaturePointDetector::~vtkFeaturePointDetector() = default;
+vtkCxxSetObjectMacro(vtkFeaturePointDetector, Locator, vtkAbstractPointLocator);
+
+vtkFeaturePointDetector::vtkFeaturePointDetector()
+{
+  this->Locator = vtkPointCloudGridLocator::New();
+}
+
+vtkFeaturePointDetector::~vtkFeaturePointDetector()
+{
+  this->SetLocator(nullptr);
+}
 
 double vtkFeaturePointDetector::AutomaticThreshold(
   const std::vector<double>& scores, const std::vector<int>& weights, double sigmas)
@@ -191,6 +201,7 @@ bool vtkFeaturePointDetector::PrepareNeighborhoods(
     return false;
   }
   this->BeginStage("locator");
+  neighborhoods->SetLocator(this->Locator);
   if (!neighborhoods->Build(points))
   {
     vtkErrorMacro(<< "Cannot process the input: " << neighborhoods->GetErrorText()
@@ -518,4 +529,5 @@ void vtkFeaturePointDetector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Threshold: " << this->Threshold << "\n";
   os << indent << "ThresholdSigmas: " << this->ThresholdSigmas << "\n";
   os << indent << "OutputFeaturesOnly: " << this->OutputFeaturesOnly << "\n";
+  os << indent << "Locator: " << (this->Locator ? this->Locator->GetClassName() : "(none)") << "\n";
 }

@@ -8,10 +8,10 @@
  *
  * - Input: any vtkPointSet; only its points are used. Points with NaN or infinite coordinates are
  *   skipped (warning; scores 0, never feature points).
- * - Neighbourhoods: one vtkPointCloudNeighborhoods per run (by default its own uniform grid,
- *   optionally a vtkStaticPointLocator; one k-nearest query per point, the cloud renumbered in
- *   the grid's order while the method works) and the mean spacing d of the cloud, the unit of
- *   every radius.
+ * - Neighbourhoods: one vtkPointCloudNeighborhoods per run over the point locator of
+ *   SetLocator() (by default a vtkPointCloudGridLocator: one batched k-nearest query, the cloud
+ *   renumbered in the grid's order while the method works) and the mean spacing d of the cloud,
+ *   the unit of every radius.
  * - Threshold: AUTOMATIC (default) treats the scores as a background distribution with a
  *   minority of outliers: its centre mu and scale s are the median and the normalized median
  *   absolute deviation (1.4826 MAD), re-estimated after discarding the values above mu + z s until
@@ -37,6 +37,7 @@
 #include <string>  // For stage names
 #include <vector>  // For AutomaticThreshold
 
+class vtkAbstractPointLocator;
 class vtkDataArray;
 class vtkPointCloudNeighborhoods;
 class vtkPoints;
@@ -78,6 +79,18 @@ public:
    */
   vtkSetClampMacro(ThresholdSigmas, double, 0.0, 1000.0);
   vtkGetMacro(ThresholdSigmas, double);
+  ///@}
+
+  ///@{
+  /**
+   * The point locator the neighbourhoods are searched with. By default a
+   * vtkPointCloudGridLocator. Any vtkAbstractPointLocator gives the same feature points (ties in
+   * distance aside), more slowly: it is asked for each point in turn (in parallel only when it is
+   * a vtkStaticPointLocator), and the cloud is not renumbered. Each run gives it the input's
+   * points and builds it, and releases its search structure at the end. nullptr: the default.
+   */
+  void SetLocator(vtkAbstractPointLocator* locator);
+  vtkGetObjectMacro(Locator, vtkAbstractPointLocator);
   ///@}
 
   ///@{
@@ -199,6 +212,7 @@ protected:
   double Threshold = 1.0;
   double ThresholdSigmas = 5.0;
   bool OutputFeaturesOnly = false;
+  vtkAbstractPointLocator* Locator = nullptr;
 
   double MeanSpacing = 0.0;
   double ThresholdUsed = 0.0;

@@ -3,9 +3,9 @@
  * @brief   k-nearest-neighbour tables and the mean point spacing of a point cloud, shared by the
  *          feature filters of this module.
  *
- * vtkPointCloudNeighborhoods validates a cloud's coordinates once, builds one search structure
- * over its finite points (its own uniform grid by default, or a vtkStaticPointLocator: see
- * SearchMethod), and answers the two questions every score of this module needs:
+ * vtkPointCloudNeighborhoods validates a cloud's coordinates once, builds one point locator over
+ * its finite points (a vtkPointCloudGridLocator by default, or any vtkAbstractPointLocator: see
+ * SetLocator()), and answers the two questions every score of this module needs:
  *
  * - the mean spacing d: the mean, over all points, of the distance to the nearest *distinct* point
  *   (for a point stacked on duplicates, the nearest point at a nonzero distance), leaving out
@@ -19,14 +19,16 @@
  * Points with a NaN or infinite coordinate are left out of the locator: they are never anyone's
  * neighbour and their own rows are filled with -1.
  *
- * @warning The queries run in parallel with vtkSMPTools; each row depends on its point only, so the
- * tables are identical whatever the number of threads or the SMP backend. Clouds of more than
+ * @warning The queries run in parallel with vtkSMPTools when the locator is a
+ * vtkPointCloudGridLocator or a vtkStaticPointLocator (their queries are thread safe once built),
+ * one after the other with any other locator; each row depends on its point only, so the tables
+ * are identical whatever the number of threads or the SMP backend. Clouds of more than
  * 2^31 - 1 points are refused (the tables hold 32-bit ids).
  *
  * Python: the methods on std::vector<int32_t> tables and bare pointers are C++ only; each has a
  * wrapped counterpart on VTK arrays (vtkIdList of point ids, a k-component vtkIntArray table).
  *
- * @sa vtkFeaturePointExtraction vtkStaticPointLocator
+ * @sa vtkPointCloudGridLocator vtkFeaturePointExtraction vtkStaticPointLocator
  */
 #ifndef vtkPointCloudNeighborhoods_h
 #define vtkPointCloudNeighborhoods_h
@@ -36,18 +38,18 @@
 #include "vtkSmartPointer.h" // For ivars
 
 #include <cstdint> // For int32_t
-#include <memory>  // For the search grid
 #include <string>  // For error text
 #include <vector>  // For tables
 
+class vtkAbstractPointLocator;
 class vtkAlgorithm;
 class vtkCellArray;
 class vtkDoubleArray;
 class vtkIdList;
 class vtkIntArray;
 class vtkPoints;
+class vtkPointCloudGridLocator;
 class vtkPolyData;
-class vtkStaticPointLocator;
 class vtkUnsignedCharArray;
 
 class FEATUREPOINTSFILTERS_EXPORT vtkPointCloudNeighborhoods : public vtkObject
@@ -57,26 +59,38 @@ public:
   vtkTypeMacro(vtkPointCloudNeighborhoods, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /**
+   * The point locator the k nearest points are found with; Build() gives it its data set (the
+   * cloud's finite points) and builds it. The default, a vtkPointCloudGridLocator, answers a
+   * whole table in one batched query, its queries taken cell by cell: about 3 times faster than
+   * vtkStaticPointLocator here (docs/design.md, "Neighbourhoods"), and the only one with which
+   * ReorderSpatially() works. Any other locator is asked for each point in turn
+   * (FindClosestNPoints); all give the same tables, ties in distance aside (the grid breaks them
+   * by the smaller point id). nullptr restores the default. Set before Build(). The next Build(),
+   * and the destruction of this object, release the locator's search structure and data set, so
+   * that a locator a filter keeps holds no cloud between runs.
+   */
+  void SetLocator(vtkAbstractPointLocator* locator);
+  vtkAbstractPointLocator* GetLocator() const;
+  ///@}
+
   enum SearchMethods
   {
-    GRID = 0,                 ///< this class's uniform grid (default)
-    STATIC_POINT_LOCATOR = 1, ///< vtkStaticPointLocator::FindClosestNPoints
+    GRID = 0,                 ///< a vtkPointCloudGridLocator (default)
+    STATIC_POINT_LOCATOR = 1, ///< a vtkStaticPointLocator
+    OTHER_LOCATOR = 2,        ///< another locator given to SetLocator()
   };
 
   ///@{
   /**
-   * How the k nearest points are found; both give the same tables (ties in distance aside, which
-   * GRID breaks by the smaller point id). GRID, the default, sorts the points into a uniform grid
-   * of about two cells per point over the cloud's robust bounding box and searches rings of cells
-   * around each query, the queries themselves taken cell by cell: about 3 times faster than
-   * STATIC_POINT_LOCATOR here (docs/design.md, "Neighbourhoods"). Set before Build().
+   * A shortcut to SetLocator(): GRID sets a new vtkPointCloudGridLocator, STATIC_POINT_LOCATOR a
+   * new vtkStaticPointLocator (unless the locator already is one). GetSearchMethod() tells which
+   * kind the locator is (OTHER_LOCATOR for any other class).
    */
-  void SetSearchMethod(int method) { this->SearchMethod = method == STATIC_POINT_LOCATOR ? method : GRID; }
-  int GetSearchMethod() const { return this->SearchMethod; }
+  void SetSearchMethod(int method);
+  int GetSearchMethod() const;
   ///@}
-
-  /** The grid of the GRID search (opaque). */
-  struct SearchGrid;
 
   /**
    * Validate the points and build the locator. Returns false, with a message in GetErrorText(),
@@ -89,7 +103,8 @@ public:
   std::vector<vtkIdType> GetValidIds() const;
 
   /**
-   * Renumber the cloud in a spatially coherent order, right after Build() (GRID only): the valid
+   * Renumber the cloud in a spatially coherent order, right after Build(), with a
+   * vtkPointCloudGridLocator only (vtkPointCloudGridLocator::ReorderSpatially()): the valid
    * points in the grid's cell order (ascending ids within a cell), then the invalid ones in their
    * given order. From then on GetPoints() is the cloud in that order (the grid's own copy of the
    * coordinates, in double precision, not a new one), every id this object takes or returns is a
@@ -102,7 +117,7 @@ public:
    * (docs/design.md, "Neighbourhoods"). The order depends on the points only, not on the number
    * of threads.
    *
-   * Returns false, and changes nothing, with STATIC_POINT_LOCATOR, before a successful Build(), or
+   * Returns false, and changes nothing, with another locator, before a successful Build(), or
    * once a spacing or a neighbour table has been computed.
    * C++ only; the wrapped counterpart fills `originalIds` (a vtkIntArray) instead.
    */
@@ -202,12 +217,13 @@ protected:
   ~vtkPointCloudNeighborhoods() override;
 
   vtkSmartPointer<vtkPoints> Points;
-  vtkSmartPointer<vtkPolyData> LocatorData; // the valid points only
-  vtkSmartPointer<vtkStaticPointLocator> Locator;
-  std::unique_ptr<SearchGrid> Grid;
-  int SearchMethod = GRID;
+  // The locator's data set: all points for the grid (it leaves the non-finite ones out itself),
+  // the finite points only for another locator.
+  vtkSmartPointer<vtkPolyData> LocatorData;
+  vtkSmartPointer<vtkAbstractPointLocator> Locator;
+  vtkPointCloudGridLocator* GridLocator = nullptr; // Locator, when it is the grid, after Build()
   bool Searchable = false; // Build() succeeded
-  std::vector<vtkIdType> LocatorToPoint; // empty when all points are valid
+  std::vector<vtkIdType> LocatorToPoint; // empty when all points are valid or with the grid
   std::vector<unsigned char> Valid;
   std::vector<double> NearestDistances;
   std::vector<unsigned char> NearestKnown; // FindNearestDistances() filled NearestDistances here
@@ -220,13 +236,8 @@ protected:
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
   std::string ErrorText;
 
-  void BuildGrid();
-  // The distinct positions of each cell of the grid and their points, when some points coincide.
-  void BuildSites();
-  // `distinct` (k = 1 only): the nearest point at a nonzero distance.
-  bool FindNearestNeighborsOnGrid(int k, const std::vector<vtkIdType>& ids,
-    std::vector<int32_t>& table, std::vector<double>* nearestDistances, vtkAlgorithm* progressAlg,
-    double progressStart, double progressEnd, bool distinct = false);
+  // Releases the locator's search structure and data set (they are this object's cloud).
+  void ReleaseLocator();
 
   // Completes NearestDistances for duplicates and averages them (shared by both spacing methods).
   double FinishMeanSpacing();

@@ -24,6 +24,8 @@
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
+#include <vtksys/SystemTools.hxx>
+
 #include <algorithm>
 #include <atomic>
 #include <cctype>
@@ -39,6 +41,9 @@
 #include <stdexcept>
 #include <csignal>
 #include <sstream>
+// POSIX where vtksys has no counterpart: the isolated reader (fork, memfd_create, prctl, setrlimit,
+// alarm, waitpid), the exclusive creation of temporary files (open with O_EXCL), the one stat()
+// that tells a file's type and size, and the async-signal-safe removal of temporary files (unlink).
 #include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -414,6 +419,8 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
 {
   error.clear();
   const std::string extension = GetExtension(fileName);
+  // One stat() rather than vtksys: its errno names why a path cannot be read, and it tells FIFOs,
+  // devices and sockets apart (vtksys::SystemTools does not), all from the same instant.
   struct stat info;
   if (::stat(fileName.c_str(), &info) != 0)
   {
@@ -444,7 +451,7 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
       "; readable: " + GetReadableExtensions();
     return nullptr;
   }
-  if (FILE* probe = std::fopen(fileName.c_str(), "rb"))
+  if (FILE* probe = vtksys::SystemTools::Fopen(fileName, "rb"))
   {
     std::fclose(probe);
   }
@@ -803,7 +810,8 @@ std::string vtkPointCloudIO::CreateTemporaryFile(
   {
     const std::string name = TemporaryName(prefix);
     const int slot = removeOnSignal ? RegisterTemporary(name) : -1;
-    // Created with the permissions of any new file (0666 less the umask).
+    // Created with the permissions of any new file (0666 less the umask). POSIX open(): O_EXCL
+    // creates the file only if no other writer has, which no vtksys or stream call guarantees.
     const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0)
     {
@@ -838,8 +846,7 @@ void vtkPointCloudIO::ReleaseTemporaryFile(const std::string& temporary)
 
 bool vtkPointCloudIO::CanCreate(const std::string& fileName, std::string& error)
 {
-  struct stat info;
-  if (::stat(fileName.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+  if (vtksys::SystemTools::FileIsDirectory(fileName))
   {
     error = fileName + ": is a folder, not a file";
     return false;
@@ -849,7 +856,7 @@ bool vtkPointCloudIO::CanCreate(const std::string& fileName, std::string& error)
   {
     return false;
   }
-  std::remove(temporary.c_str());
+  vtksys::SystemTools::RemoveFile(temporary);
   return true;
 }
 
@@ -973,7 +980,7 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
   }
   if (!ok)
   {
-    std::remove(temporary.c_str());
+    vtksys::SystemTools::RemoveFile(temporary);
   }
   ReleaseTemporaryFile(temporary);
   return ok;
@@ -985,6 +992,7 @@ void vtkPointCloudIO::RemoveTemporaryFileInProgress()
   {
     if (slot.State.load() == Named)
     {
+      // unlink() is async-signal-safe; vtksys::SystemTools::RemoveFile() allocates a string.
       ::unlink(slot.Name);
     }
   }

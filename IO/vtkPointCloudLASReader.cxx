@@ -1,4 +1,5 @@
 #include "vtkPointCloudLASReader.h"
+#include "vtkPointCloudFiles.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -29,6 +30,9 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkPointCloudLASReader);
+
+using featurepoints::HostIsBigEndian;
+using featurepoints::Load;
 
 namespace
 {
@@ -71,35 +75,6 @@ const RecordLayout Layouts[11] = {
   { 59, true, 22, -1, -1 },  // 9: 6 and a wave packet
   { 67, true, 22, 30, 36 },  // 10: 8 and a wave packet
 };
-
-bool HostIsBigEndian()
-{
-  const uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 0;
-}
-
-// A little-endian value at p.
-template <typename T>
-inline T Load(const char* p, bool swap)
-{
-  T value;
-  if (swap)
-  {
-    char bytes[sizeof(T)];
-    for (size_t b = 0; b < sizeof(T); ++b)
-    {
-      bytes[b] = p[sizeof(T) - 1 - b];
-    }
-    std::memcpy(&value, bytes, sizeof(T));
-  }
-  else
-  {
-    std::memcpy(&value, p, sizeof(T));
-  }
-  return value;
-}
 
 std::string Lower(std::string text)
 {
@@ -158,42 +133,26 @@ int vtkPointCloudLASReader::RequestData(
     vtkErrorMacro(<< message);
     return 1;
   };
-  if (!this->FileName || !*this->FileName)
+  std::string message;
+  if (const unsigned long code = featurepoints::CheckReaderFileName(this->FileName, message))
   {
-    return fail(vtkErrorCode::NoFileNameError, "no file name given");
+    return fail(code, message);
   }
   const std::string name = this->FileName;
   const std::string laz = name +
     ": compressed LAS (LAZ) is not supported in this build: it needs the LASzip library, which "
     "Debian 12 does not ship; decompress the file to .las first (laszip, las2las or pdal "
     "translate)";
-  if (!vtksys::SystemTools::FileExists(name))
-  {
-    return fail(vtkErrorCode::CannotOpenFileError, name + ": no such file");
-  }
-  if (vtksys::SystemTools::FileIsDirectory(name))
-  {
-    return fail(vtkErrorCode::CannotOpenFileError, name + ": is a directory, not a file");
-  }
   if (Lower(vtksys::SystemTools::GetFilenameLastExtension(name)) == ".laz")
   {
     return fail(vtkErrorCode::FileFormatError, laz);
   }
-  errno = 0;
-  vtksys::ifstream stream(name.c_str(), std::ios::in | std::ios::binary);
-  if (!stream)
+  vtksys::ifstream stream;
+  uint64_t fileSize = 0;
+  if (const unsigned long code = featurepoints::OpenReaderFile(name, stream, fileSize, message))
   {
-    return fail(vtkErrorCode::CannotOpenFileError,
-      name + ": cannot open the file (" + (errno ? std::strerror(errno) : "unknown reason") + ")");
+    return fail(code, message);
   }
-  stream.seekg(0, std::ios::end);
-  const std::streamoff streamSize = stream.tellg();
-  stream.seekg(0, std::ios::beg);
-  if (streamSize < 0 || !stream)
-  {
-    return fail(vtkErrorCode::CannotOpenFileError, name + ": cannot read the file's size");
-  }
-  const uint64_t fileSize = static_cast<uint64_t>(streamSize);
   auto bad = [&](const std::string& what) {
     return fail(vtkErrorCode::FileFormatError, name + ": " + what);
   };

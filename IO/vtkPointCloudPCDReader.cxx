@@ -1,5 +1,6 @@
 #include "vtkPointCloudPCDReader.h"
 #include "vtkPointCloudPCDTypes.h"
+#include "vtkPointCloudFiles.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -34,6 +35,9 @@
 
 vtkStandardNewMacro(vtkPointCloudPCDReader);
 
+using featurepoints::HostIsBigEndian;
+using featurepoints::Load;
+
 using namespace featurepoints::pcd;
 
 namespace
@@ -47,35 +51,6 @@ constexpr uint64_t MaxValuesPerPoint = uint64_t(1) << 20;
 // LZF's longest back reference (3 bytes) stands for 264 bytes: no LZF block decompresses to more
 // than 88 times its size.
 constexpr uint64_t MaxLZFExpansion = 88;
-
-bool HostIsBigEndian()
-{
-  const uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 0;
-}
-
-// A value of the file (little-endian) at p.
-template <typename T>
-inline T Load(const char* p, bool swap)
-{
-  T value;
-  if (swap)
-  {
-    char bytes[sizeof(T)];
-    for (size_t b = 0; b < sizeof(T); ++b)
-    {
-      bytes[b] = p[sizeof(T) - 1 - b];
-    }
-    std::memcpy(&value, bytes, sizeof(T));
-  }
-  else
-  {
-    std::memcpy(&value, p, sizeof(T));
-  }
-  return value;
-}
 
 bool IsSpace(char c)
 {
@@ -1163,35 +1138,20 @@ int vtkPointCloudPCDReader::RequestData(
     vtkErrorMacro(<< message);
     return 1;
   };
-  if (!this->FileName || !*this->FileName)
+  std::string message;
+  if (const unsigned long code = featurepoints::CheckReaderFileName(this->FileName, message))
   {
-    return fail(vtkErrorCode::NoFileNameError, "no file name given");
+    return fail(code, message);
   }
   const std::string name = this->FileName;
-  if (!vtksys::SystemTools::FileExists(name))
+  vtksys::ifstream stream;
+  uint64_t size = 0;
+  if (const unsigned long code = featurepoints::OpenReaderFile(name, stream, size, message))
   {
-    return fail(vtkErrorCode::CannotOpenFileError, name + ": no such file");
-  }
-  if (vtksys::SystemTools::FileIsDirectory(name))
-  {
-    return fail(vtkErrorCode::CannotOpenFileError, name + ": is a directory, not a file");
-  }
-  errno = 0;
-  vtksys::ifstream stream(name.c_str(), std::ios::in | std::ios::binary);
-  if (!stream)
-  {
-    return fail(vtkErrorCode::CannotOpenFileError,
-      name + ": cannot open the file (" + (errno ? std::strerror(errno) : "unknown reason") + ")");
-  }
-  stream.seekg(0, std::ios::end);
-  const std::streamoff size = stream.tellg();
-  stream.seekg(0, std::ios::beg);
-  if (size < 0 || !stream)
-  {
-    return fail(vtkErrorCode::CannotOpenFileError, name + ": cannot read the file's size");
+    return fail(code, message);
   }
 
-  PCDParser parser(name, stream, static_cast<uint64_t>(size));
+  PCDParser parser(name, stream, size);
   vtkNew<vtkPolyData> cloud;
   if (!parser.Read(cloud, this->DecodeColors, this->CreateVertexCells))
   {

@@ -1,5 +1,6 @@
 #include "vtkPointCloudPCDWriter.h"
 #include "vtkPointCloudPCDTypes.h"
+#include "vtkPointCloudFiles.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
@@ -32,14 +33,6 @@ using namespace featurepoints::pcd;
 
 namespace
 {
-bool HostIsBigEndian()
-{
-  const uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 0;
-}
-
 // The PCD type an array is written in; false for types PCD cannot hold.
 bool ChooseType(vtkDataArray* array, PcdType& type)
 {
@@ -241,15 +234,7 @@ void vtkPointCloudPCDWriter::WriteData()
   }
 
   vtkPointData* pd = input->GetPointData();
-  auto fits = [n](vtkDataArray* a, int components) {
-    return a && a->GetNumberOfComponents() == components && a->GetNumberOfTuples() >= n;
-  };
-  vtkDataArray* normals = pd->GetNormals();
-  if (!fits(normals, 3))
-  {
-    normals = pd->GetArray("Normals");
-    normals = fits(normals, 3) ? normals : nullptr;
-  }
+  vtkDataArray* normals = featurepoints::FindWritableNormals(pd, n);
   PcdType type;
   if (normals && ChooseType(normals, type))
   {
@@ -267,7 +252,8 @@ void vtkPointCloudPCDWriter::WriteData()
   {
     const bool alpha = colourName[3] == 'A';
     vtkDataArray* array = pd->GetArray(colourName);
-    if (fits(array, alpha ? 4 : 3) && array->GetDataType() == VTK_UNSIGNED_CHAR)
+    if (featurepoints::FitsPoints(array, alpha ? 4 : 3, n) &&
+      array->GetDataType() == VTK_UNSIGNED_CHAR)
     {
       Column c{ alpha ? "rgba" : "rgb", array, 0, 1, alpha ? PcdType::UInt32 : PcdType::Float32 };
       c.Pack = alpha ? Column::PackedRGBA : Column::PackedRGB;
@@ -278,37 +264,21 @@ void vtkPointCloudPCDWriter::WriteData()
 
   // Names the reader gives a meaning to stay with their arrays; other clashes get a suffix.
   std::set<std::string> used = { "x", "y", "z", "normal_x", "normal_y", "normal_z", "rgb", "rgba" };
-  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
-  {
-    vtkAbstractArray* abstract = pd->GetAbstractArray(i);
-    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
-    if (!abstract || (array && (array == normals || colours.count(array))))
-    {
-      continue;
-    }
-    const std::string label = abstract->GetName() ? abstract->GetName() : "(unnamed)";
-    if (!array || !ChooseType(array, type))
-    {
-      vtkWarningMacro(<< name << ": array '" << label << "' (" << abstract->GetClassName()
-                      << ") skipped: not numeric");
-      continue;
-    }
-    const int k = array->GetNumberOfComponents();
-    if (k < 1 || array->GetNumberOfTuples() < n)
-    {
-      vtkWarningMacro(<< name << ": array '" << label << "' skipped: " << array->GetNumberOfTuples()
-                      << " tuples of " << k << " components for " << n << " points");
-      continue;
-    }
-    const std::string base = Sanitize(abstract->GetName());
-    std::string field = base;
-    for (int s = 2; used.count(field); ++s)
-    {
-      field = base + "_" + std::to_string(s);
-    }
-    used.insert(field);
-    columns.push_back({ field, array, 0, k, type });
-  }
+  std::set<vtkDataArray*> written = colours;
+  written.insert(normals);
+  featurepoints::ForEachOtherPointArray(
+    pd, n, name, written, [&type](vtkDataArray* array) { return ChooseType(array, type); },
+    [&](vtkDataArray* array) {
+      const std::string base = Sanitize(array->GetName());
+      std::string field = base;
+      for (int s = 2; used.count(field); ++s)
+      {
+        field = base + "_" + std::to_string(s);
+      }
+      used.insert(field);
+      columns.push_back({ field, array, 0, array->GetNumberOfComponents(), type });
+    },
+    [this](const std::string& text) { vtkWarningMacro(<< text); });
 
   std::string fields = "FIELDS", sizes = "SIZE", types = "TYPE", counts = "COUNT";
   size_t rowSize = 0;
@@ -347,7 +317,7 @@ void vtkPointCloudPCDWriter::WriteData()
   }
   bool ok = std::fwrite(header.data(), 1, header.size(), file) == header.size();
   std::string problem;
-  const bool swap = HostIsBigEndian();
+  const bool swap = featurepoints::HostIsBigEndian();
 
   if (ok && this->DataFormat == BINARY_COMPRESSED)
   {

@@ -1,5 +1,6 @@
 #include "vtkPointCloudPLYReader.h"
 #include "vtkPointCloudPLYTypes.h"
+#include "vtkPointCloudFiles.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -38,25 +39,8 @@ using namespace featurepoints::ply;
 namespace
 {
 
-template <typename T, bool Swap>
-inline T Load(const char* p)
-{
-  T value;
-  if (Swap)
-  {
-    char bytes[sizeof(T)];
-    for (size_t b = 0; b < sizeof(T); ++b)
-    {
-      bytes[b] = p[sizeof(T) - 1 - b];
-    }
-    std::memcpy(&value, bytes, sizeof(T));
-  }
-  else
-  {
-    std::memcpy(&value, p, sizeof(T));
-  }
-  return value;
-}
+using featurepoints::HostIsBigEndian;
+using featurepoints::Load;
 
 // One property of a packed row (file byte order) to one component of an output array.
 template <typename S, typename D, bool Swap>
@@ -1220,35 +1204,20 @@ int vtkPointCloudPLYReader::RequestData(
     vtkErrorMacro(<< message);
     return 1;
   };
-  if (!this->FileName || !*this->FileName)
+  std::string message;
+  if (const unsigned long code = featurepoints::CheckReaderFileName(this->FileName, message))
   {
-    return fail(vtkErrorCode::NoFileNameError, "no file name given");
+    return fail(code, message);
   }
   const std::string name = this->FileName;
-  if (!vtksys::SystemTools::FileExists(name))
+  vtksys::ifstream stream;
+  uint64_t size = 0;
+  if (const unsigned long code = featurepoints::OpenReaderFile(name, stream, size, message))
   {
-    return fail(vtkErrorCode::CannotOpenFileError, name + ": no such file");
-  }
-  if (vtksys::SystemTools::FileIsDirectory(name))
-  {
-    return fail(vtkErrorCode::CannotOpenFileError, name + ": is a directory, not a file");
-  }
-  errno = 0;
-  vtksys::ifstream stream(name.c_str(), std::ios::in | std::ios::binary);
-  if (!stream)
-  {
-    return fail(vtkErrorCode::CannotOpenFileError,
-      name + ": cannot open the file (" + (errno ? std::strerror(errno) : "unknown reason") + ")");
-  }
-  stream.seekg(0, std::ios::end);
-  const std::streamoff size = stream.tellg();
-  stream.seekg(0, std::ios::beg);
-  if (size < 0 || !stream)
-  {
-    return fail(vtkErrorCode::CannotOpenFileError, name + ": cannot read the file's size");
+    return fail(code, message);
   }
 
-  PLYParser parser(name, stream, static_cast<uint64_t>(size));
+  PLYParser parser(name, stream, size);
   vtkNew<vtkPolyData> cloud;
   const bool ok = parser.Read(cloud, this->CreateVertexCells);
   for (const std::string& warning : parser.Warnings)

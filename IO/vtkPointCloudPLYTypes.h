@@ -107,14 +107,6 @@ inline void WithType(PlyType type, F&& f)
   }
 }
 
-inline bool HostIsBigEndian()
-{
-  const uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 0;
-}
-
 } // namespace ply
 } // namespace featurepoints
 

@@ -1,5 +1,6 @@
 #include "vtkPointCloudPLYWriter.h"
 #include "vtkPointCloudPLYTypes.h"
+#include "vtkPointCloudFiles.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
@@ -233,15 +234,7 @@ void vtkPointCloudPLYWriter::WriteData()
   }
 
   vtkPointData* pd = input->GetPointData();
-  auto fits = [n](vtkDataArray* a, int components) {
-    return a && a->GetNumberOfComponents() == components && a->GetNumberOfTuples() >= n;
-  };
-  vtkDataArray* normals = pd->GetNormals();
-  if (!fits(normals, 3))
-  {
-    normals = pd->GetArray("Normals");
-    normals = fits(normals, 3) ? normals : nullptr;
-  }
+  vtkDataArray* normals = featurepoints::FindWritableNormals(pd, n);
   PlyType type;
   if (normals && ChooseType(normals, type))
   {
@@ -251,10 +244,13 @@ void vtkPointCloudPLYWriter::WriteData()
     }
   }
   vtkDataArray* colours = pd->GetArray("RGB");
-  if (!(fits(colours, 3) && colours->GetDataType() == VTK_UNSIGNED_CHAR))
+  if (!(featurepoints::FitsPoints(colours, 3, n) && colours->GetDataType() == VTK_UNSIGNED_CHAR))
   {
     colours = pd->GetArray("RGBA");
-    colours = (fits(colours, 4) && colours->GetDataType() == VTK_UNSIGNED_CHAR) ? colours : nullptr;
+    colours =
+      (featurepoints::FitsPoints(colours, 4, n) && colours->GetDataType() == VTK_UNSIGNED_CHAR)
+      ? colours
+      : nullptr;
   }
   if (colours)
   {
@@ -267,49 +263,33 @@ void vtkPointCloudPLYWriter::WriteData()
 
   // Names the reader gives a meaning to stay with their arrays; other clashes get a suffix.
   std::set<std::string> used = { "x", "y", "z", "nx", "ny", "nz", "red", "green", "blue", "alpha" };
-  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
-  {
-    vtkAbstractArray* abstract = pd->GetAbstractArray(i);
-    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
-    if (!abstract || (array && (array == normals || array == colours)))
-    {
-      continue;
-    }
-    const std::string label = abstract->GetName() ? abstract->GetName() : "(unnamed)";
-    if (!array || !ChooseType(array, type))
-    {
-      vtkWarningMacro(<< name << ": array '" << label << "' (" << abstract->GetClassName()
-                      << ") skipped: not numeric");
-      continue;
-    }
-    const int k = array->GetNumberOfComponents();
-    if (k < 1 || array->GetNumberOfTuples() < n)
-    {
-      vtkWarningMacro(<< name << ": array '" << label << "' skipped: " << array->GetNumberOfTuples()
-                      << " tuples of " << k << " components for " << n << " points");
-      continue;
-    }
-    const std::string base = Sanitize(abstract->GetName());
-    std::vector<std::string> names(k);
-    for (int s = 1;; ++s)
-    {
-      const std::string stem = s == 1 ? base : base + "_" + std::to_string(s);
+  featurepoints::ForEachOtherPointArray(
+    pd, n, name, { normals, colours },
+    [&type](vtkDataArray* array) { return ChooseType(array, type); },
+    [&](vtkDataArray* array) {
+      const std::string base = Sanitize(array->GetName());
+      const int k = array->GetNumberOfComponents();
+      std::vector<std::string> names(k);
+      for (int s = 1;; ++s)
+      {
+        const std::string stem = s == 1 ? base : base + "_" + std::to_string(s);
+        for (int c = 0; c < k; ++c)
+        {
+          names[c] = k == 1 ? stem : stem + "_" + std::to_string(c);
+        }
+        if (std::none_of(names.begin(), names.end(),
+              [&used](const std::string& p) { return used.count(p); }))
+        {
+          break;
+        }
+      }
       for (int c = 0; c < k; ++c)
       {
-        names[c] = k == 1 ? stem : stem + "_" + std::to_string(c);
+        used.insert(names[c]);
+        columns.push_back({ names[c], array, c, type, 0 });
       }
-      if (std::none_of(
-            names.begin(), names.end(), [&used](const std::string& p) { return used.count(p); }))
-      {
-        break;
-      }
-    }
-    for (int c = 0; c < k; ++c)
-    {
-      used.insert(names[c]);
-      columns.push_back({ names[c], array, c, type, 0 });
-    }
-  }
+    },
+    [this](const std::string& text) { vtkWarningMacro(<< text); });
 
   const bool ascii = this->FileType == VTK_ASCII;
   std::string header = "ply\nformat ";
@@ -337,7 +317,7 @@ void vtkPointCloudPLYWriter::WriteData()
   bool ok = std::fwrite(header.data(), 1, header.size(), file) == header.size();
 
   // Rows are packed a chunk at a time, then written as they are (binary) or as text.
-  const bool swap = HostIsBigEndian();
+  const bool swap = featurepoints::HostIsBigEndian();
   const vtkIdType rowsPerChunk = static_cast<vtkIdType>(std::max<size_t>(1, ChunkBytes / rowSize));
   std::vector<char> packed(static_cast<size_t>(std::min(n, rowsPerChunk)) * rowSize);
   std::vector<char> text(ascii

@@ -3,6 +3,7 @@
 // formats 0 to 10, extra bytes): every attribute read back, coordinates at 10^6 with scale 0.001
 // to 1e-9; LAZ refused with its one line; malformed files (lying counts and sizes) refused with
 // one line naming the file, before any allocation.
+#include "FeaturePointsTestReaders.h"
 #include "vtkPointCloudLASReader.h"
 
 #include "FeaturePointsTestFiles.h"
@@ -35,39 +36,10 @@ namespace
 {
 using fptest::Spit;
 
-int Failures = 0;
-
-#define LAS_CHECK(condition, ...)                                                                  \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::printf("FAILED (line %d): ", __LINE__);                                                 \
-      std::printf(__VA_ARGS__);                                                                    \
-      std::printf("\n");                                                                           \
-      ++Failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
-
-class Catcher : public vtkCommand
-{
-public:
-  static Catcher* New() { return new Catcher; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    const std::string text = data ? static_cast<const char*>(data) : "";
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
-  }
-  std::vector<std::string> Errors;
-  std::vector<std::string> Warnings;
-};
-
-std::string Folder;
-
-std::string PathOf(const std::string& name)
-{
-  return Folder + "/" + name;
-}
+using fptest::Catcher;
+using fptest::Failures;
+using fptest::Folder;
+using fptest::PathOf;
 
 struct ReadResult
 {
@@ -128,10 +100,10 @@ void Formats()
       const std::string path = PathOf(name);
       Spit(path, Bytes(f));
       ReadResult r = Read(path);
-      LAS_CHECK(r.Errors.empty() && r.Format == format && r.Minor == minor, "%s: %s", name.c_str(),
+      FEATUREPOINTS_CHECK(r.Errors.empty() && r.Format == format && r.Minor == minor, "%s: %s", name.c_str(),
         r.Message.c_str());
       vtkPolyData* c = r.Cloud;
-      LAS_CHECK(c->GetNumberOfPoints() == 3 && c->GetPoints()->GetDataType() == VTK_DOUBLE &&
+      FEATUREPOINTS_CHECK(c->GetNumberOfPoints() == 3 && c->GetPoints()->GetDataType() == VTK_DOUBLE &&
           c->GetNumberOfVerts() == 3,
         "%s: 3 double points with vertex cells", name.c_str());
       if (c->GetNumberOfPoints() != 3)
@@ -143,9 +115,9 @@ void Formats()
         format == 2 || format == 3 || format == 5 || format == 7 || format == 8 || format == 10;
       const bool nir = format == 8 || format == 10;
       vtkPointData* pd = c->GetPointData();
-      LAS_CHECK(pd->GetNumberOfArrays() == 4 + gps + rgb + nir, "%s: %d arrays", name.c_str(),
+      FEATUREPOINTS_CHECK(pd->GetNumberOfArrays() == 4 + gps + rgb + nir, "%s: %d arrays", name.c_str(),
         pd->GetNumberOfArrays());
-      LAS_CHECK((pd->GetArray("GpsTime") != nullptr) == gps &&
+      FEATUREPOINTS_CHECK((pd->GetArray("GpsTime") != nullptr) == gps &&
           (pd->GetArray("RGB") != nullptr) == rgb && (pd->GetArray("NIR") != nullptr) == nir,
         "%s: GpsTime, RGB, NIR present as the format has them", name.c_str());
       for (vtkIdType i = 0; i < 3; ++i)
@@ -156,7 +128,7 @@ void Formats()
         const double expected[3] = { p.X * 0.01 + 100, p.Y * 0.5 - 3, p.Z * 0.001 + 0.25 };
         for (int k = 0; k < 3; ++k)
         {
-          LAS_CHECK(std::fabs(x[k] - expected[k]) <= 1e-9 * std::max(1.0, std::fabs(expected[k])),
+          FEATUREPOINTS_CHECK(std::fabs(x[k] - expected[k]) <= 1e-9 * std::max(1.0, std::fabs(expected[k])),
             "%s: point %lld coordinate %d: %.17g, %.17g expected", name.c_str(),
             static_cast<long long>(i), k, x[k], expected[k]);
         }
@@ -164,29 +136,29 @@ void Formats()
           vtkDataArray* a = pd->GetArray(array);
           return a ? a->GetComponent(i, component) : -1.0;
         };
-        LAS_CHECK(value("Intensity") == p.Intensity, "%s: Intensity %lld", name.c_str(),
+        FEATUREPOINTS_CHECK(value("Intensity") == p.Intensity, "%s: Intensity %lld", name.c_str(),
           static_cast<long long>(i));
-        LAS_CHECK(
+        FEATUREPOINTS_CHECK(
           value("ReturnNumber") == p.ReturnNumber && value("NumberOfReturns") == p.NumberOfReturns,
           "%s: returns of %lld: %g of %g", name.c_str(), static_cast<long long>(i),
           value("ReturnNumber"), value("NumberOfReturns"));
         // Formats 0-5: the class without its flags (set in every record written here).
-        LAS_CHECK(value("Classification") == p.Classification, "%s: Classification %lld: %g",
+        FEATUREPOINTS_CHECK(value("Classification") == p.Classification, "%s: Classification %lld: %g",
           name.c_str(), static_cast<long long>(i), value("Classification"));
         if (gps)
         {
-          LAS_CHECK(value("GpsTime") == p.GpsTime, "%s: GpsTime %lld", name.c_str(),
+          FEATUREPOINTS_CHECK(value("GpsTime") == p.GpsTime, "%s: GpsTime %lld", name.c_str(),
             static_cast<long long>(i));
         }
         if (rgb)
         {
-          LAS_CHECK(
+          FEATUREPOINTS_CHECK(
             value("RGB", 0) == p.Red && value("RGB", 1) == p.Green && value("RGB", 2) == p.Blue,
             "%s: RGB %lld", name.c_str(), static_cast<long long>(i));
         }
         if (nir)
         {
-          LAS_CHECK(value("NIR") == p.Nir, "%s: NIR %lld", name.c_str(), static_cast<long long>(i));
+          FEATUREPOINTS_CHECK(value("NIR") == p.Nir, "%s: NIR %lld", name.c_str(), static_cast<long long>(i));
         }
       }
     }
@@ -209,7 +181,7 @@ void Precision()
   const std::string path = PathOf("precision-1.4.las");
   Spit(path, Bytes(f));
   ReadResult r = Read(path);
-  LAS_CHECK(
+  FEATUREPOINTS_CHECK(
     r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 3, "precision: %s", r.Message.c_str());
   if (r.Cloud->GetNumberOfPoints() != 3)
   {
@@ -223,7 +195,7 @@ void Precision()
     r.Cloud->GetPoint(i, x);
     for (int k = 0; k < 3; ++k)
     {
-      LAS_CHECK(std::fabs(x[k] - expected[i][k]) <= 1e-9,
+      FEATUREPOINTS_CHECK(std::fabs(x[k] - expected[i][k]) <= 1e-9,
         "precision: point %lld coordinate %d: %.17g, %.17g expected (%.3g off)",
         static_cast<long long>(i), k, x[k], expected[i][k], x[k] - expected[i][k]);
     }
@@ -236,7 +208,7 @@ void Precision()
   {
     io->GetPoint(1, x);
   }
-  LAS_CHECK(
+  FEATUREPOINTS_CHECK(
     io && io->GetPoints()->GetDataType() == VTK_DOUBLE && std::fabs(x[0] - 1000000.001) <= 1e-9,
     "precision through vtkPointCloudIO: %s", error.c_str());
 }
@@ -251,11 +223,11 @@ void Compressed()
   Spit(laz, Bytes(f));
   const std::string expected = "compressed LAS (LAZ) is not supported in this build";
   ReadResult r = Read(laz);
-  LAS_CHECK(r.Errors.size() == 1 && r.Message.find(laz + ": " + expected) == 0 &&
+  FEATUREPOINTS_CHECK(r.Errors.size() == 1 && r.Message.find(laz + ": " + expected) == 0 &&
       r.Message.find("Debian 12") != std::string::npos && r.Message.find('\n') == std::string::npos,
     "laz: [%s]", r.Message.c_str());
   std::string error;
-  LAS_CHECK(vtkPointCloudIO::CanRead("laz") &&
+  FEATUREPOINTS_CHECK(vtkPointCloudIO::CanRead("laz") &&
       vtkPointCloudIO::GetReadableExtensions().find("laz") == std::string::npos &&
       !vtkPointCloudIO::Read(laz, error) && error == r.Message,
     "laz through vtkPointCloudIO: [%s]", error.c_str());
@@ -263,7 +235,7 @@ void Compressed()
   const std::string marked = PathOf("laszip-marked.las");
   Spit(marked, Bytes(f));
   r = Read(marked);
-  LAS_CHECK(
+  FEATUREPOINTS_CHECK(
     r.Message.find(marked + ": " + expected) == 0, "compression bit: [%s]", r.Message.c_str());
 }
 
@@ -321,12 +293,12 @@ void Malformed()
     ReadResult r = Read(path);
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    LAS_CHECK(r.Errors.size() == 1 && r.Cloud->GetNumberOfPoints() == 0 &&
+    FEATUREPOINTS_CHECK(r.Errors.size() == 1 && r.Cloud->GetNumberOfPoints() == 0 &&
         r.Message.find(path + ": ") == 0 && r.Message.find(c.Expected) != std::string::npos &&
         r.Message.find('\n') == std::string::npos && seconds < 1.0,
       "%s: [%s] in %.2f s, expected [%s]", c.Name, r.Message.c_str(), seconds, c.Expected);
     std::string error;
-    LAS_CHECK(!vtkPointCloudIO::Read(path, error) && error == r.Message,
+    FEATUREPOINTS_CHECK(!vtkPointCloudIO::Read(path, error) && error == r.Message,
       "%s through vtkPointCloudIO: [%s]", c.Name, error.c_str());
   }
   // The point offset beyond the file.
@@ -336,7 +308,7 @@ void Malformed()
   const std::string path = PathOf("offset.las");
   Spit(path, offset);
   ReadResult r = Read(path);
-  LAS_CHECK(r.Message.find("the point data cannot start at byte 100000") != std::string::npos,
+  FEATUREPOINTS_CHECK(r.Message.find("the point data cannot start at byte 100000") != std::string::npos,
     "offset: [%s]", r.Message.c_str());
 }
 } // namespace

@@ -3,6 +3,7 @@
 // back reference), an organized cloud with NaN points, clouds written and read back bit for bit in
 // each encoding, and malformed files (lying headers, truncated or corrupt data) that must give one
 // line naming the file, with an empty output.
+#include "FeaturePointsTestReaders.h"
 #include "vtkPointCloudPCDReader.h"
 #include "vtkPointCloudPCDWriter.h"
 
@@ -40,40 +41,10 @@ namespace
 {
 using fptest::Spit;
 
-int Failures = 0;
-
-#define PCD_CHECK(condition, ...)                                                                  \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::printf("FAILED (line %d): ", __LINE__);                                                 \
-      std::printf(__VA_ARGS__);                                                                    \
-      std::printf("\n");                                                                           \
-      ++Failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
-
-// Keeps the errors and warnings of the object it observes instead of printing them.
-class Catcher : public vtkCommand
-{
-public:
-  static Catcher* New() { return new Catcher; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    const std::string text = data ? static_cast<const char*>(data) : "";
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
-  }
-  std::vector<std::string> Errors;
-  std::vector<std::string> Warnings;
-};
-
-std::string Folder;
-
-std::string PathOf(const std::string& name)
-{
-  return Folder + "/" + name;
-}
+using fptest::Catcher;
+using fptest::Failures;
+using fptest::Folder;
+using fptest::PathOf;
 
 // The little-endian bytes of a value (the tests run on little-endian hosts: checked in main).
 template <typename T>
@@ -142,25 +113,25 @@ void KnownAscii()
     "0 0 1e-3 4278255360 nan 65535 -128 0 127 9\r\n"
     "-1.25e2 +4 5 255 -0.125 0 5 6 7 1");
   ReadResult r = Read(path);
-  PCD_CHECK(r.Errors.empty(), "known ascii: %s", r.Message.c_str());
+  FEATUREPOINTS_CHECK(r.Errors.empty(), "known ascii: %s", r.Message.c_str());
   vtkPolyData* c = r.Cloud;
-  PCD_CHECK(c->GetNumberOfPoints() == 3, "known ascii: %lld points",
+  FEATUREPOINTS_CHECK(c->GetNumberOfPoints() == 3, "known ascii: %lld points",
     static_cast<long long>(c->GetNumberOfPoints()));
   if (c->GetNumberOfPoints() != 3)
   {
     return;
   }
-  PCD_CHECK(c->GetPoints()->GetDataType() == VTK_FLOAT, "known ascii: float points");
+  FEATUREPOINTS_CHECK(c->GetPoints()->GetDataType() == VTK_FLOAT, "known ascii: float points");
   double x[3];
   c->GetPoint(0, x);
-  PCD_CHECK(x[0] == 1.5 && x[1] == -2 && x[2] == 3.25, "point 0: %g %g %g", x[0], x[1], x[2]);
+  FEATUREPOINTS_CHECK(x[0] == 1.5 && x[1] == -2 && x[2] == 3.25, "point 0: %g %g %g", x[0], x[1], x[2]);
   c->GetPoint(1, x);
-  PCD_CHECK(x[0] == 0 && x[1] == 0 && x[2] == static_cast<double>(1e-3f), "point 1: %g %g %g", x[0],
+  FEATUREPOINTS_CHECK(x[0] == 0 && x[1] == 0 && x[2] == static_cast<double>(1e-3f), "point 1: %g %g %g", x[0],
     x[1], x[2]);
   c->GetPoint(2, x);
-  PCD_CHECK(x[0] == -125 && x[1] == 4 && x[2] == 5, "point 2: %g %g %g", x[0], x[1], x[2]);
+  FEATUREPOINTS_CHECK(x[0] == -125 && x[1] == 4 && x[2] == 5, "point 2: %g %g %g", x[0], x[1], x[2]);
   auto* rgb = vtkUnsignedCharArray::SafeDownCast(c->GetPointData()->GetArray("RGB"));
-  PCD_CHECK(rgb && rgb->GetNumberOfComponents() == 3 && c->GetPointData()->GetScalars() == rgb,
+  FEATUREPOINTS_CHECK(rgb && rgb->GetNumberOfComponents() == 3 && c->GetPointData()->GetScalars() == rgb,
     "RGB: unsigned char, 3 components, the active scalars");
   // 16711935 = 0x00FF00FF, 4278255360 = 0xFF00FF00 (the alpha byte ignored), 255 = 0x0000FF.
   const int expected[3][3] = { { 255, 0, 255 }, { 0, 255, 0 }, { 0, 0, 255 } };
@@ -168,40 +139,40 @@ void KnownAscii()
   {
     for (int k = 0; k < 3; ++k)
     {
-      PCD_CHECK(rgb->GetComponent(i, k) == expected[i][k], "RGB %d %d: %g, %d expected", i, k,
+      FEATUREPOINTS_CHECK(rgb->GetComponent(i, k) == expected[i][k], "RGB %d %d: %g, %d expected", i, k,
         rgb->GetComponent(i, k), expected[i][k]);
     }
   }
-  PCD_CHECK(c->GetPointData()->GetArray("intensity") &&
+  FEATUREPOINTS_CHECK(c->GetPointData()->GetArray("intensity") &&
       c->GetPointData()->GetArray("intensity")->GetDataType() == VTK_FLOAT,
     "intensity: float");
-  PCD_CHECK(Component(c, "intensity", 0, 0) == 0.5 && std::isnan(Component(c, "intensity", 1, 0)) &&
+  FEATUREPOINTS_CHECK(Component(c, "intensity", 0, 0) == 0.5 && std::isnan(Component(c, "intensity", 1, 0)) &&
       Component(c, "intensity", 2, 0) == -0.125,
     "intensity values");
   auto* ring = vtkUnsignedShortArray::SafeDownCast(c->GetPointData()->GetArray("ring"));
-  PCD_CHECK(ring && ring->GetValue(0) == 7 && ring->GetValue(1) == 65535 && ring->GetValue(2) == 0,
+  FEATUREPOINTS_CHECK(ring && ring->GetValue(0) == 7 && ring->GetValue(1) == 65535 && ring->GetValue(2) == 0,
     "ring: unsigned short 7, 65535, 0");
   auto* hist = vtkSignedCharArray::SafeDownCast(c->GetPointData()->GetArray("hist"));
-  PCD_CHECK(hist && hist->GetNumberOfComponents() == 3, "hist: signed char, 3 components");
+  FEATUREPOINTS_CHECK(hist && hist->GetNumberOfComponents() == 3, "hist: signed char, 3 components");
   const int h[3][3] = { { 1, -2, 3 }, { -128, 0, 127 }, { 5, 6, 7 } };
   for (int i = 0; hist && i < 3; ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
-      PCD_CHECK(hist->GetComponent(i, k) == h[i][k], "hist %d %d", i, k);
+      FEATUREPOINTS_CHECK(hist->GetComponent(i, k) == h[i][k], "hist %d %d", i, k);
     }
   }
-  PCD_CHECK(c->GetPointData()->GetNumberOfArrays() == 4,
+  FEATUREPOINTS_CHECK(c->GetPointData()->GetNumberOfArrays() == 4,
     "known ascii: RGB, intensity, ring, hist and no padding array (%d arrays)",
     c->GetPointData()->GetNumberOfArrays());
-  PCD_CHECK(c->GetNumberOfVerts() == 3, "known ascii: vertex cells");
+  FEATUREPOINTS_CHECK(c->GetNumberOfVerts() == 3, "known ascii: vertex cells");
 
   // DecodeColors off: rgb kept as the float it is written as.
   ReadResult raw = Read(path, false);
   uint32_t bits = 0x00FF00FF;
   float packed;
   std::memcpy(&packed, &bits, 4);
-  PCD_CHECK(raw.Errors.empty() && Component(raw.Cloud, "rgb", 0, 0) == static_cast<double>(packed),
+  FEATUREPOINTS_CHECK(raw.Errors.empty() && Component(raw.Cloud, "rgb", 0, 0) == static_cast<double>(packed),
     "DecodeColors off: rgb kept as its float");
 }
 
@@ -226,34 +197,34 @@ void KnownBinary()
   const std::string path = PathOf("known-binary.pcd");
   Spit(path, header + body);
   ReadResult r = Read(path);
-  PCD_CHECK(r.Errors.empty(), "known binary: %s", r.Message.c_str());
+  FEATUREPOINTS_CHECK(r.Errors.empty(), "known binary: %s", r.Message.c_str());
   vtkPolyData* c = r.Cloud;
-  PCD_CHECK(c->GetNumberOfPoints() == 2 && c->GetPoints()->GetDataType() == VTK_DOUBLE,
+  FEATUREPOINTS_CHECK(c->GetNumberOfPoints() == 2 && c->GetPoints()->GetDataType() == VTK_DOUBLE,
     "known binary: 2 double points");
   for (int i = 0; i < 2 && c->GetNumberOfPoints() == 2; ++i)
   {
     double x[3];
     c->GetPoint(i, x);
-    PCD_CHECK(x[0] == xs[i] && x[1] == ys[i] && x[2] == zs[i], "binary point %d: %.17g %g %g", i,
+    FEATUREPOINTS_CHECK(x[0] == xs[i] && x[1] == ys[i] && x[2] == zs[i], "binary point %d: %.17g %g %g", i,
       x[0], x[1], x[2]);
     for (int k = 0; k < 3; ++k)
     {
-      PCD_CHECK(Component(c, "Normals", i, k) == normals[i][k], "binary normal %d %d", i, k);
+      FEATUREPOINTS_CHECK(Component(c, "Normals", i, k) == normals[i][k], "binary normal %d %d", i, k);
     }
     for (int k = 0; k < 2; ++k)
     {
-      PCD_CHECK(Component(c, "pair", i, k) == pair[i][k], "binary pair %d %d", i, k);
+      FEATUREPOINTS_CHECK(Component(c, "pair", i, k) == pair[i][k], "binary pair %d %d", i, k);
     }
   }
-  PCD_CHECK(c->GetPointData()->GetNormals() == c->GetPointData()->GetArray("Normals"),
+  FEATUREPOINTS_CHECK(c->GetPointData()->GetNormals() == c->GetPointData()->GetArray("Normals"),
     "known binary: Normals are the active normals");
-  PCD_CHECK(c->GetPointData()->GetNumberOfArrays() == 2, "known binary: Normals, pair");
+  FEATUREPOINTS_CHECK(c->GetPointData()->GetNumberOfArrays() == 2, "known binary: Normals, pair");
 
   // Cut in the second point: an error, no partial cloud.
   const std::string cut = PathOf("cut-binary.pcd");
   Spit(cut, header + body.substr(0, body.size() - 5));
   ReadResult bad = Read(cut);
-  PCD_CHECK(bad.Errors.size() == 1 && bad.Cloud->GetNumberOfPoints() == 0 &&
+  FEATUREPOINTS_CHECK(bad.Errors.size() == 1 && bad.Cloud->GetNumberOfPoints() == 0 &&
       bad.Message.find(cut + ": the file ends in point 2 of 2") == 0,
     "cut binary: %s", bad.Message.c_str());
 }
@@ -272,13 +243,13 @@ void KnownCompressed()
   const std::string path = PathOf("known-compressed.pcd");
   Spit(path, header + Bytes(uint32_t(lzf.size())) + Bytes(uint32_t(24)) + lzf);
   ReadResult r = Read(path);
-  PCD_CHECK(r.Errors.empty(), "known compressed: %s", r.Message.c_str());
-  PCD_CHECK(r.Cloud->GetNumberOfPoints() == 2, "known compressed: 2 points");
+  FEATUREPOINTS_CHECK(r.Errors.empty(), "known compressed: %s", r.Message.c_str());
+  FEATUREPOINTS_CHECK(r.Cloud->GetNumberOfPoints() == 2, "known compressed: 2 points");
   for (int i = 0; i < 2 && r.Cloud->GetNumberOfPoints() == 2; ++i)
   {
     double p[3];
     r.Cloud->GetPoint(i, p);
-    PCD_CHECK(p[0] == x[i] && p[1] == y[i] && p[2] == z, "compressed point %d: %g %g %g", i, p[0],
+    FEATUREPOINTS_CHECK(p[0] == x[i] && p[1] == y[i] && p[2] == z, "compressed point %d: %g %g %g", i, p[0],
       p[1], p[2]);
   }
 
@@ -311,7 +282,7 @@ void KnownCompressed()
     const std::string bad = PathOf(c.Name);
     Spit(bad, c.Bytes);
     ReadResult b = Read(bad);
-    PCD_CHECK(b.Errors.size() == 1 && b.Cloud->GetNumberOfPoints() == 0 &&
+    FEATUREPOINTS_CHECK(b.Errors.size() == 1 && b.Cloud->GetNumberOfPoints() == 0 &&
         b.Message.find(bad + ": ") == 0 && b.Message.find(c.Expected) != std::string::npos &&
         b.Message.find('\n') == std::string::npos,
       "%s: [%s], expected [%s]", c.Name, b.Message.c_str(), c.Expected);
@@ -335,24 +306,24 @@ void Organized()
     "WIDTH 3\nHEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 6\nDATA binary\n" +
       body);
   ReadResult r = Read(path);
-  PCD_CHECK(r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 4 && r.Skipped == 2 &&
+  FEATUREPOINTS_CHECK(r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 4 && r.Skipped == 2 &&
       r.Width == 3 && r.Height == 2,
     "organized: %lld points, %lld skipped, %lld x %lld: %s",
     static_cast<long long>(r.Cloud->GetNumberOfPoints()), static_cast<long long>(r.Skipped),
     static_cast<long long>(r.Width), static_cast<long long>(r.Height), r.Message.c_str());
-  PCD_CHECK(
+  FEATUREPOINTS_CHECK(
     r.Warnings.size() == 1 && r.Warnings[0].find("2 of 6 points skipped") != std::string::npos,
     "organized: one warning with the count");
   const double kept[4] = { 10, 12, 14, 15 };
   for (int i = 0; i < 4 && r.Cloud->GetNumberOfPoints() == 4; ++i)
   {
-    PCD_CHECK(Component(r.Cloud, "curvature", i, 0) == kept[i], "organized: curvature %d", i);
+    FEATUREPOINTS_CHECK(Component(r.Cloud, "curvature", i, 0) == kept[i], "organized: curvature %d", i);
   }
-  PCD_CHECK(r.Cloud->GetNumberOfVerts() == 4, "organized: 4 vertex cells");
+  FEATUREPOINTS_CHECK(r.Cloud->GetNumberOfVerts() == 4, "organized: 4 vertex cells");
   // Through vtkPointCloudIO: a cloud without the invalid points, no error.
   std::string error;
   vtkSmartPointer<vtkPointSet> io = vtkPointCloudIO::Read(path, error);
-  PCD_CHECK(
+  FEATUREPOINTS_CHECK(
     io && io->GetNumberOfPoints() == 4, "organized through vtkPointCloudIO: %s", error.c_str());
 }
 
@@ -421,7 +392,7 @@ void RoundTrips()
       writer->SetInputData(cloud);
       writer->SetFileName(path.c_str());
       writer->SetDataFormat(format);
-      PCD_CHECK(writer->Write() == 1 && writer->GetErrorCode() == vtkErrorCode::NoError,
+      FEATUREPOINTS_CHECK(writer->Write() == 1 && writer->GetErrorCode() == vtkErrorCode::NoError,
         "write %s: %s", path.c_str(), writer->GetErrorMessage().c_str());
       std::ifstream in(path);
       std::string line;
@@ -434,13 +405,13 @@ void RoundTrips()
           break;
         }
       }
-      PCD_CHECK(data, "%s: DATA %s", path.c_str(), names[format]);
+      FEATUREPOINTS_CHECK(data, "%s: DATA %s", path.c_str(), names[format]);
       ReadResult r = Read(path);
-      PCD_CHECK(r.Errors.empty(), "read %s: %s", path.c_str(), r.Message.c_str());
+      FEATUREPOINTS_CHECK(r.Errors.empty(), "read %s: %s", path.c_str(), r.Message.c_str());
       vtkPolyData* back = r.Cloud;
-      PCD_CHECK(
+      FEATUREPOINTS_CHECK(
         back->GetNumberOfPoints() == cloud->GetNumberOfPoints(), "%s: points", path.c_str());
-      PCD_CHECK(back->GetPoints()->GetDataType() == (doublePoints ? VTK_DOUBLE : VTK_FLOAT),
+      FEATUREPOINTS_CHECK(back->GetPoints()->GetDataType() == (doublePoints ? VTK_DOUBLE : VTK_FLOAT),
         "%s: point type", path.c_str());
       if (back->GetNumberOfPoints() != cloud->GetNumberOfPoints())
       {
@@ -463,10 +434,10 @@ void RoundTrips()
         if (!read || read->GetNumberOfComponents() != original->GetNumberOfComponents() ||
           read->GetNumberOfTuples() != original->GetNumberOfTuples())
         {
-          PCD_CHECK(false, "%s: array %s missing or of another shape", path.c_str(), array);
+          FEATUREPOINTS_CHECK(false, "%s: array %s missing or of another shape", path.c_str(), array);
           continue;
         }
-        PCD_CHECK(read->GetDataType() == original->GetDataType() ||
+        FEATUREPOINTS_CHECK(read->GetDataType() == original->GetDataType() ||
             (original->GetDataType() == VTK_ID_TYPE && read->GetDataType() == VTK_LONG_LONG),
           "%s: array %s of type %s", path.c_str(), array, read->GetDataTypeAsString());
         for (vtkIdType i = 0; i < original->GetNumberOfValues(); ++i)
@@ -479,11 +450,11 @@ void RoundTrips()
       auto* ids =
         vtkIdTypeArray::SafeDownCast(cloud->GetPointData()->GetArray("vtkOriginalPointIds"));
       vtkDataArray* readIds = back->GetPointData()->GetArray("vtkOriginalPointIds");
-      PCD_CHECK(readIds &&
+      FEATUREPOINTS_CHECK(readIds &&
           static_cast<long long>(readIds->GetComponent(2999, 0)) ==
             static_cast<long long>(ids->GetValue(2999)),
         "%s: 64-bit ids exact", path.c_str());
-      PCD_CHECK(differences == 0, "%s: %ld values differ", path.c_str(), differences);
+      FEATUREPOINTS_CHECK(differences == 0, "%s: %ld values differ", path.c_str(), differences);
     }
   }
 
@@ -500,7 +471,7 @@ void RoundTrips()
     writer->SetDataFormat(format);
     writer->Write();
     ReadResult r = Read(path);
-    PCD_CHECK(r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 0, "empty %s: %s", names[format],
+    FEATUREPOINTS_CHECK(r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 0, "empty %s: %s", names[format],
       r.Message.c_str());
   }
 
@@ -508,10 +479,10 @@ void RoundTrips()
   vtkSmartPointer<vtkPolyData> cloud = RandomCloud(500, false);
   std::string error;
   const std::string path = PathOf("through-io.pcd");
-  PCD_CHECK(
+  FEATUREPOINTS_CHECK(
     vtkPointCloudIO::Write(cloud, path, error), "vtkPointCloudIO::Write: %s", error.c_str());
   vtkSmartPointer<vtkPointSet> back = vtkPointCloudIO::Read(path, error);
-  PCD_CHECK(back && back->GetNumberOfPoints() == 500 && back->GetPointData()->GetArray("label") &&
+  FEATUREPOINTS_CHECK(back && back->GetNumberOfPoints() == 500 && back->GetPointData()->GetArray("label") &&
       back->GetPointData()->GetArray("label")->GetComponent(499, 0) == 399,
     "vtkPointCloudIO::Read: %s", error.c_str());
 }
@@ -581,18 +552,18 @@ void Malformed()
     ReadResult r = Read(path);
     if (!*c.Expected)
     {
-      PCD_CHECK(
+      FEATUREPOINTS_CHECK(
         r.Errors.empty() && r.Cloud->GetNumberOfPoints() == 3, "%s: %s", c.Name, r.Message.c_str());
       continue;
     }
-    PCD_CHECK(r.Errors.size() == 1 && r.Cloud->GetNumberOfPoints() == 0 &&
+    FEATUREPOINTS_CHECK(r.Errors.size() == 1 && r.Cloud->GetNumberOfPoints() == 0 &&
         r.Message.find(path) == 0 && r.Message.find(c.Expected) != std::string::npos &&
         r.Message.find('\n') == std::string::npos,
       "%s: [%s], expected [%s]", c.Name, r.Message.c_str(), c.Expected);
     // Through vtkPointCloudIO the same line (the empty file is refused there before the reader).
     std::string error;
     vtkSmartPointer<vtkPointSet> io = vtkPointCloudIO::Read(path, error);
-    PCD_CHECK(!io && error.find(path + ":") == 0 && error.find('\n') == std::string::npos &&
+    FEATUREPOINTS_CHECK(!io && error.find(path + ":") == 0 && error.find('\n') == std::string::npos &&
         (c.Bytes.empty() || error == r.Message),
       "%s through vtkPointCloudIO: [%s]", c.Name, error.c_str());
   }

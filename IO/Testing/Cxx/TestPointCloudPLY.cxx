@@ -1,6 +1,7 @@
 // vtkPointCloudPLYWriter and vtkPointCloudPLYReader: clouds written and read back bit for bit in
 // both formats, hand-written files (ASCII, big-endian binary, faces around the vertices), and
 // malformed or truncated files that must give an error naming the file, with an empty output.
+#include "FeaturePointsTestReaders.h"
 #include "vtkPointCloudPLYReader.h"
 #include "vtkPointCloudPLYWriter.h"
 
@@ -38,54 +39,10 @@
 
 namespace
 {
-int Failures = 0;
-
-#define PLY_CHECK(condition, ...)                                                                  \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::printf("FAILED (line %d): ", __LINE__);                                                 \
-      std::printf(__VA_ARGS__);                                                                    \
-      std::printf("\n");                                                                           \
-      ++Failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
-
-// Keeps the errors and warnings of the object it observes instead of printing them.
-class Catcher : public vtkCommand
-{
-public:
-  static Catcher* New() { return new Catcher; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    const std::string text = data ? static_cast<const char*>(data) : "";
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
-  }
-  std::vector<std::string> Errors;
-  std::vector<std::string> Warnings;
-};
-
-std::string Folder;
-
-std::string PathOf(const std::string& name)
-{
-  return Folder + "/" + name;
-}
-
-void WriteBytes(const std::string& path, const std::string& bytes)
-{
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
-std::string ReadBytes(const std::string& path)
-{
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+using fptest::Catcher;
+using fptest::Failures;
+using fptest::Folder;
+using fptest::PathOf;
 
 bool Contains(const std::string& text, const std::string& part)
 {
@@ -248,38 +205,38 @@ const Expected CloudArrays[] = { { "F", "F", VTK_FLOAT }, { "Normals", "Normals"
 void Compare(const std::string& what, vtkPolyData* in, vtkPolyData* out)
 {
   const vtkIdType n = in->GetNumberOfPoints();
-  PLY_CHECK(out->GetNumberOfPoints() == n, "%s: %lld points read, %lld written", what.c_str(),
+  FEATUREPOINTS_CHECK(out->GetNumberOfPoints() == n, "%s: %lld points read, %lld written", what.c_str(),
     static_cast<long long>(out->GetNumberOfPoints()), static_cast<long long>(n));
   if (out->GetNumberOfPoints() != n)
   {
     return;
   }
   const int type = in->GetPoints()->GetDataType();
-  PLY_CHECK(out->GetPoints()->GetDataType() == type, "%s: points of type %d, %d written",
+  FEATUREPOINTS_CHECK(out->GetPoints()->GetDataType() == type, "%s: points of type %d, %d written",
     what.c_str(), out->GetPoints()->GetDataType(), type);
   if (n > 0 && out->GetPoints()->GetDataType() == type)
   {
     const size_t bytes = static_cast<size_t>(3 * n) * (type == VTK_FLOAT ? 4 : 8);
-    PLY_CHECK(std::memcmp(in->GetPoints()->GetVoidPointer(0), out->GetPoints()->GetVoidPointer(0),
+    FEATUREPOINTS_CHECK(std::memcmp(in->GetPoints()->GetVoidPointer(0), out->GetPoints()->GetVoidPointer(0),
                 bytes) == 0,
       "%s: coordinates differ", what.c_str());
   }
   vtkPointData* pd = out->GetPointData();
   const int expectedArrays = static_cast<int>(sizeof(CloudArrays) / sizeof(CloudArrays[0]));
-  PLY_CHECK(pd->GetNumberOfArrays() == expectedArrays, "%s: %d arrays read, %d expected",
+  FEATUREPOINTS_CHECK(pd->GetNumberOfArrays() == expectedArrays, "%s: %d arrays read, %d expected",
     what.c_str(), pd->GetNumberOfArrays(), expectedArrays);
   for (const Expected& e : CloudArrays)
   {
     vtkDataArray* a = in->GetPointData()->GetArray(e.In);
     vtkDataArray* b = pd->GetArray(e.Out);
-    PLY_CHECK(b, "%s: no array %s", what.c_str(), e.Out);
+    FEATUREPOINTS_CHECK(b, "%s: no array %s", what.c_str(), e.Out);
     if (!b)
     {
       continue;
     }
-    PLY_CHECK(b->GetDataType() == e.Type, "%s: %s of type %s, %d expected", what.c_str(), e.Out,
+    FEATUREPOINTS_CHECK(b->GetDataType() == e.Type, "%s: %s of type %s, %d expected", what.c_str(), e.Out,
       b->GetDataTypeAsString(), e.Type);
-    PLY_CHECK(
+    FEATUREPOINTS_CHECK(
       b->GetNumberOfComponents() == a->GetNumberOfComponents() && b->GetNumberOfTuples() == n,
       "%s: %s has %d components and %lld tuples", what.c_str(), e.Out, b->GetNumberOfComponents(),
       static_cast<long long>(b->GetNumberOfTuples()));
@@ -295,14 +252,14 @@ void Compare(const std::string& what, vtkPolyData* in, vtkPolyData* out)
         differ += Same(a->GetComponent(i, c), b->GetComponent(i, c)) ? 0 : 1;
       }
     }
-    PLY_CHECK(differ == 0, "%s: %lld values of %s differ", what.c_str(),
+    FEATUREPOINTS_CHECK(differ == 0, "%s: %lld values of %s differ", what.c_str(),
       static_cast<long long>(differ), e.Out);
   }
-  PLY_CHECK(pd->GetNormals() && pd->GetNormals() == pd->GetArray("Normals"),
+  FEATUREPOINTS_CHECK(pd->GetNormals() && pd->GetNormals() == pd->GetArray("Normals"),
     "%s: Normals are not the active normals", what.c_str());
-  PLY_CHECK(pd->GetScalars() && pd->GetScalars() == pd->GetArray("RGB"),
+  FEATUREPOINTS_CHECK(pd->GetScalars() && pd->GetScalars() == pd->GetArray("RGB"),
     "%s: RGB is not the active scalars", what.c_str());
-  PLY_CHECK(out->GetNumberOfVerts() == n && out->GetNumberOfCells() == n,
+  FEATUREPOINTS_CHECK(out->GetNumberOfVerts() == n && out->GetNumberOfCells() == n,
     "%s: %lld vertex cells for %lld points", what.c_str(),
     static_cast<long long>(out->GetNumberOfVerts()), static_cast<long long>(n));
 }
@@ -319,16 +276,16 @@ void TestRoundTrips()
         (doublePoints ? "_double" : "_float") + ".ply");
       vtkSmartPointer<vtkPolyData> cloud = MakeCloud(300, doublePoints ? 11 : 7, doublePoints);
       const WriteResult w = Write(cloud, path, ascii);
-      PLY_CHECK(w.Code == 0 && w.Message.empty() && w.Errors == 0, "%s: write error %s",
+      FEATUREPOINTS_CHECK(w.Code == 0 && w.Message.empty() && w.Errors == 0, "%s: write error %s",
         what.c_str(), w.Message.c_str());
-      PLY_CHECK(w.Warnings == 1, "%s: %zu warnings, 1 expected (the string array)", what.c_str(),
+      FEATUREPOINTS_CHECK(w.Warnings == 1, "%s: %zu warnings, 1 expected (the string array)", what.c_str(),
         w.Warnings);
 
-      const std::string bytes = ReadBytes(path);
+      const std::string bytes = fptest::Slurp(path);
       const std::string start = std::string("ply\nformat ") +
         (ascii ? "ascii" : "binary_little_endian") +
         " 1.0\ncomment written by FeaturePoints (vtkPointCloudPLYWriter)\nelement vertex 300\n";
-      PLY_CHECK(bytes.compare(0, start.size(), start) == 0, "%s: header starts with %s",
+      FEATUREPOINTS_CHECK(bytes.compare(0, start.size(), start) == 0, "%s: header starts with %s",
         what.c_str(), bytes.substr(0, start.size()).c_str());
       const char* coordinate = doublePoints ? "double" : "float";
       for (const std::string& line :
@@ -338,7 +295,7 @@ void TestRoundTrips()
           std::string("property float my_score\n"), std::string("property int x_2\n"),
           std::string("property char SC\n") })
       {
-        PLY_CHECK(Contains(bytes, line), "%s: no header line %s", what.c_str(), line.c_str());
+        FEATUREPOINTS_CHECK(Contains(bytes, line), "%s: no header line %s", what.c_str(), line.c_str());
       }
       if (!ascii)
       {
@@ -346,12 +303,12 @@ void TestRoundTrips()
         // BigIds 8, Label 4, Pair 16, my_score 4, S 2, US 2, UI 4, SC 1, x_2 4.
         const size_t row = (doublePoints ? 24 : 12) + 12 + 3 + 62;
         const size_t header = bytes.find("end_header\n") + 11;
-        PLY_CHECK(bytes.size() == header + 300 * row, "%s: %zu bytes, %zu expected", what.c_str(),
+        FEATUREPOINTS_CHECK(bytes.size() == header + 300 * row, "%s: %zu bytes, %zu expected", what.c_str(),
           bytes.size(), header + 300 * row);
       }
 
       const ReadResult r = Read(path);
-      PLY_CHECK(r.Code == 0 && r.Message.empty() && r.Errors == 0, "%s: read error %s",
+      FEATUREPOINTS_CHECK(r.Code == 0 && r.Message.empty() && r.Errors == 0, "%s: read error %s",
         what.c_str(), r.Message.c_str());
       Compare(what, cloud, r.Data);
       std::printf("round trip, %s: %lld points, %d arrays\n", what.c_str(),
@@ -364,9 +321,9 @@ void TestRoundTrips()
   vtkSmartPointer<vtkPolyData> cloud = MakeCloud(200000, 5, false);
   const std::string path = PathOf("large.ply");
   const WriteResult w = Write(cloud, path, false);
-  PLY_CHECK(w.Code == 0 && w.Message.empty(), "200000 points: write error %s", w.Message.c_str());
+  FEATUREPOINTS_CHECK(w.Code == 0 && w.Message.empty(), "200000 points: write error %s", w.Message.c_str());
   const ReadResult r = Read(path);
-  PLY_CHECK(r.Code == 0 && r.Message.empty(), "200000 points: read error %s", r.Message.c_str());
+  FEATUREPOINTS_CHECK(r.Code == 0 && r.Message.empty(), "200000 points: read error %s", r.Message.c_str());
   Compare("200000 points", cloud, r.Data);
   std::printf("round trip, 200000 points: %lld points read\n",
     static_cast<long long>(r.Data->GetNumberOfPoints()));
@@ -376,7 +333,7 @@ void TestRoundTrips()
   reader->SetFileName(path.c_str());
   reader->CreateVertexCellsOff();
   reader->Update();
-  PLY_CHECK(reader->GetOutput()->GetNumberOfPoints() == 200000 &&
+  FEATUREPOINTS_CHECK(reader->GetOutput()->GetNumberOfPoints() == 200000 &&
       reader->GetOutput()->GetNumberOfCells() == 0,
     "CreateVertexCells off: %lld cells",
     static_cast<long long>(reader->GetOutput()->GetNumberOfCells()));
@@ -385,10 +342,10 @@ void TestRoundTrips()
     vtkNew<vtkPolyData> empty; // no vtkPoints at all
     const std::string emptyPath = PathOf(ascii ? "empty_ascii.ply" : "empty_binary.ply");
     const WriteResult we = Write(empty, emptyPath, ascii);
-    PLY_CHECK(we.Code == 0 && we.Errors == 0, "empty cloud: write error %s", we.Message.c_str());
-    PLY_CHECK(Contains(ReadBytes(emptyPath), "element vertex 0\n"), "empty cloud: no vertex line");
+    FEATUREPOINTS_CHECK(we.Code == 0 && we.Errors == 0, "empty cloud: write error %s", we.Message.c_str());
+    FEATUREPOINTS_CHECK(Contains(fptest::Slurp(emptyPath), "element vertex 0\n"), "empty cloud: no vertex line");
     const ReadResult re = Read(emptyPath);
-    PLY_CHECK(
+    FEATUREPOINTS_CHECK(
       re.Code == 0 && re.Message.empty() && re.Errors == 0 && re.Data->GetNumberOfPoints() == 0,
       "empty cloud: read %lld points, error %s",
       static_cast<long long>(re.Data->GetNumberOfPoints()), re.Message.c_str());
@@ -400,7 +357,7 @@ void TestRoundTrips()
 void TestHandWrittenAscii()
 {
   const std::string path = PathOf("hand.ply");
-  WriteBytes(path,
+  fptest::Spit(path,
     "ply\r\nformat ascii 1.0\r\ncomment made by hand\r\nobj_info nothing\r\n"
     "element face 2\r\nproperty list uchar int vertex_indices\r\n"
     "element vertex 4\r\nproperty float x\r\nproperty float y\r\nproperty float z\r\n"
@@ -416,8 +373,8 @@ void TestHandWrittenAscii()
     "3 1 2 3\r\n");
   const ReadResult r = Read(path);
   vtkPolyData* out = r.Data;
-  PLY_CHECK(r.Code == 0 && r.Message.empty(), "hand-written ASCII: error %s", r.Message.c_str());
-  PLY_CHECK(out->GetNumberOfPoints() == 4 && out->GetNumberOfVerts() == 4,
+  FEATUREPOINTS_CHECK(r.Code == 0 && r.Message.empty(), "hand-written ASCII: error %s", r.Message.c_str());
+  FEATUREPOINTS_CHECK(out->GetNumberOfPoints() == 4 && out->GetNumberOfVerts() == 4,
     "hand-written ASCII: %lld points", static_cast<long long>(out->GetNumberOfPoints()));
   if (out->GetNumberOfPoints() != 4)
   {
@@ -430,8 +387,8 @@ void TestHandWrittenAscii()
   auto* i = vtkFloatArray::SafeDownCast(out->GetPointData()->GetArray("intensity"));
   auto* c = vtkUnsignedCharArray::SafeDownCast(out->GetPointData()->GetScalars());
   auto* l = vtkIntArray::SafeDownCast(out->GetPointData()->GetArray("label"));
-  PLY_CHECK(out->GetPoints()->GetDataType() == VTK_FLOAT, "hand-written ASCII: points not float");
-  PLY_CHECK(i && c && l && c->GetName() == std::string("RGB") &&
+  FEATUREPOINTS_CHECK(out->GetPoints()->GetDataType() == VTK_FLOAT, "hand-written ASCII: points not float");
+  FEATUREPOINTS_CHECK(i && c && l && c->GetName() == std::string("RGB") &&
       out->GetPointData()->GetNumberOfArrays() == 3,
     "hand-written ASCII: arrays intensity (float), RGB (uchar, active scalars), label (int) "
     "expected");
@@ -439,9 +396,9 @@ void TestHandWrittenAscii()
   {
     double x[3];
     out->GetPoint(p, x);
-    PLY_CHECK(x[0] == xyz[p][0] && x[1] == xyz[p][1] && x[2] == xyz[p][2],
+    FEATUREPOINTS_CHECK(x[0] == xyz[p][0] && x[1] == xyz[p][1] && x[2] == xyz[p][2],
       "hand-written ASCII: point %lld is (%g %g %g)", static_cast<long long>(p), x[0], x[1], x[2]);
-    PLY_CHECK(i->GetValue(p) == intensity[p] && l->GetValue(p) == label[p] &&
+    FEATUREPOINTS_CHECK(i->GetValue(p) == intensity[p] && l->GetValue(p) == label[p] &&
         c->GetTypedComponent(p, 0) == rgb[p][0] && c->GetTypedComponent(p, 1) == rgb[p][1] &&
         c->GetTypedComponent(p, 2) == rgb[p][2],
       "hand-written ASCII: values of vertex %lld", static_cast<long long>(p));
@@ -481,12 +438,12 @@ void TestBigEndian()
     }
     bytes += std::string("\x03\0\0\0\0\0\0\0\x01\0\0\0\x02", 13);
     const std::string path = PathOf("big_endian.ply");
-    WriteBytes(path, bytes);
+    fptest::Spit(path, bytes);
     const ReadResult r = Read(path);
     vtkPolyData* out = r.Data;
     auto* l = vtkIntArray::SafeDownCast(out->GetPointData()->GetArray("label"));
     auto* v = vtkDoubleArray::SafeDownCast(out->GetPointData()->GetArray("value"));
-    PLY_CHECK(r.Message.empty() && out->GetNumberOfPoints() == 2 && l && v &&
+    FEATUREPOINTS_CHECK(r.Message.empty() && out->GetNumberOfPoints() == 2 && l && v &&
         out->GetPoints()->GetDataType() == VTK_FLOAT,
       "big-endian: error %s, %lld points", r.Message.c_str(),
       static_cast<long long>(out->GetNumberOfPoints()));
@@ -494,7 +451,7 @@ void TestBigEndian()
     {
       double x[3];
       out->GetPoint(p, x);
-      PLY_CHECK(Same(x[0], xyz[p][0]) && Same(x[1], xyz[p][1]) && Same(x[2], xyz[p][2]) &&
+      FEATUREPOINTS_CHECK(Same(x[0], xyz[p][0]) && Same(x[1], xyz[p][1]) && Same(x[2], xyz[p][2]) &&
           l->GetValue(p) == label[p] && v->GetValue(p) == value[p],
         "big-endian: values of vertex %lld", static_cast<long long>(p));
     }
@@ -541,7 +498,7 @@ void TestBigEndian()
       PutBigEndian(bytes, static_cast<uint32_t>(4000000000u + p));
     }
     const std::string path = PathOf("big_endian_lists.ply");
-    WriteBytes(path, bytes);
+    fptest::Spit(path, bytes);
     const ReadResult r = Read(path);
     vtkPolyData* out = r.Data;
     vtkPointData* pd = out->GetPointData();
@@ -550,19 +507,19 @@ void TestBigEndian()
     auto* tiny = vtkSignedCharArray::SafeDownCast(pd->GetArray("tiny"));
     auto* big = vtkUnsignedIntArray::SafeDownCast(pd->GetArray("big"));
     auto* n = vtkFloatArray::SafeDownCast(pd->GetNormals());
-    PLY_CHECK(r.Message.empty() && out->GetNumberOfPoints() == 3 &&
+    FEATUREPOINTS_CHECK(r.Message.empty() && out->GetNumberOfPoints() == 3 &&
         out->GetPoints()->GetDataType() == VTK_DOUBLE && s && c && tiny && big && n &&
         c->GetNumberOfComponents() == 3 && pd->GetNumberOfArrays() == 5,
       "big-endian with lists: error %s, %lld points, %d arrays", r.Message.c_str(),
       static_cast<long long>(out->GetNumberOfPoints()), pd->GetNumberOfArrays());
-    PLY_CHECK(r.Warnings == 1, "big-endian with lists: %zu warnings, 1 expected (list skipped)",
+    FEATUREPOINTS_CHECK(r.Warnings == 1, "big-endian with lists: %zu warnings, 1 expected (list skipped)",
       r.Warnings);
     for (vtkIdType p = 0; p < 3 && s && c && tiny && big && n && out->GetNumberOfPoints() == 3; ++p)
     {
       double x[3];
       out->GetPoint(p, x);
       const int q = static_cast<int>(p);
-      PLY_CHECK(x[0] == xyz[p][0] && x[1] == xyz[p][1] && x[2] == xyz[p][2] &&
+      FEATUREPOINTS_CHECK(x[0] == xyz[p][0] && x[1] == xyz[p][1] && x[2] == xyz[p][2] &&
           n->GetTypedComponent(p, 1) == 0.6f * static_cast<float>(q) &&
           n->GetTypedComponent(p, 2) == 0.8f && s->GetValue(p) == -1000 * q - 1 &&
           c->GetTypedComponent(p, 0) == 60000 + 10 * q &&
@@ -579,15 +536,15 @@ void ExpectError(const std::string& what, const std::string& name, const std::st
   const std::string& words, int line = 0)
 {
   const std::string path = PathOf(name);
-  WriteBytes(path, content);
+  fptest::Spit(path, content);
   const ReadResult r = Read(path);
   const std::string where = line > 0 ? path + ":" + std::to_string(line) + ":" : path + ":";
-  PLY_CHECK(r.Code == vtkErrorCode::FileFormatError && r.Errors == 1 && !r.Message.empty(),
+  FEATUREPOINTS_CHECK(r.Code == vtkErrorCode::FileFormatError && r.Errors == 1 && !r.Message.empty(),
     "%s: error code %lu, %zu errors reported", what.c_str(), r.Code, r.Errors);
-  PLY_CHECK(r.Data->GetNumberOfPoints() == 0 && r.Data->GetPointData()->GetNumberOfArrays() == 0,
+  FEATUREPOINTS_CHECK(r.Data->GetNumberOfPoints() == 0 && r.Data->GetPointData()->GetNumberOfArrays() == 0,
     "%s: %lld points in the output", what.c_str(),
     static_cast<long long>(r.Data->GetNumberOfPoints()));
-  PLY_CHECK(r.Message.compare(0, where.size(), where) == 0 && Contains(r.Message, words),
+  FEATUREPOINTS_CHECK(r.Message.compare(0, where.size(), where) == 0 && Contains(r.Message, words),
     "%s: message \"%s\" should start with \"%s\" and contain \"%s\"", what.c_str(),
     r.Message.c_str(), where.c_str(), words.c_str());
   std::printf("%-34s %s\n", (what + ":").c_str(), r.Message.substr(Folder.size() + 1).c_str());
@@ -598,7 +555,7 @@ void TestErrors()
   {
     const std::string path = PathOf("does_not_exist.ply");
     const ReadResult r = Read(path);
-    PLY_CHECK(r.Code == vtkErrorCode::CannotOpenFileError && r.Errors == 1 &&
+    FEATUREPOINTS_CHECK(r.Code == vtkErrorCode::CannotOpenFileError && r.Errors == 1 &&
         r.Message.compare(0, path.size(), path) == 0 && r.Data->GetNumberOfPoints() == 0,
       "missing file: code %lu, message %s", r.Code, r.Message.c_str());
     std::printf("%-34s %s\n", "missing file:", r.Message.substr(Folder.size() + 1).c_str());
@@ -654,7 +611,7 @@ void TestErrors()
   vtkSmartPointer<vtkPolyData> cloud = MakeCloud(50, 3, false);
   const std::string full = PathOf("full.ply");
   Write(cloud, full, false);
-  const std::string bytes = ReadBytes(full);
+  const std::string bytes = fptest::Slurp(full);
   const size_t header = bytes.find("end_header\n") + 11;
   const size_t row = (bytes.size() - header) / 50;
   const struct
@@ -674,14 +631,14 @@ void TestErrors()
   vtkNew<vtkPointCloudPLYReader> reader;
   const ReadResult bad = Read(PathOf("hello.ply"), reader);
   const ReadResult good = Read(full, reader);
-  PLY_CHECK(!bad.Message.empty() && good.Message.empty() && good.Code == 0 &&
+  FEATUREPOINTS_CHECK(!bad.Message.empty() && good.Message.empty() && good.Code == 0 &&
       good.Data->GetNumberOfPoints() == 50,
     "reader reused after an error: message \"%s\", code %lu", good.Message.c_str(), good.Code);
 
   // The writer names the file it cannot write.
   const std::string unwritable = PathOf("no_such_folder/cloud.ply");
   const WriteResult w = Write(cloud, unwritable, false);
-  PLY_CHECK(w.Code == vtkErrorCode::CannotOpenFileError && w.Errors == 1 &&
+  FEATUREPOINTS_CHECK(w.Code == vtkErrorCode::CannotOpenFileError && w.Errors == 1 &&
       w.Message.compare(0, unwritable.size(), unwritable) == 0,
     "unwritable path: code %lu, message %s", w.Code, w.Message.c_str());
   std::printf("%-34s %s\n", "unwritable path:", w.Message.substr(Folder.size() + 1).c_str());

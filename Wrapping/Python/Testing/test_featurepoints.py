@@ -21,7 +21,8 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 import featurepoints
 from featurepoints import (vtkCreaseVotingFeatures, vtkFeatureCurveExtraction,
                            vtkFeaturePointEvaluation, vtkFeaturePointExtraction,
-                           vtkPointCloudIO, vtkPointCloudNeighborhoods, vtkPointCloudReader,
+                           vtkPointCloudGridLocator, vtkPointCloudIO, vtkPointCloudNeighborhoods,
+                           vtkPointCloudReader,
                            vtkPointCloudWriter, vtkVoxelDensityContrastFilter)
 
 DATA = os.environ.get("FEATUREPOINTS_DATA", "")
@@ -246,6 +247,50 @@ def test_io_functions_from_python(tmp_path):
     vtkPointCloudIO.ReadPolyData(TWO_PLANES, cloud, error)
     assert vtkPointCloudIO.Write(cloud, target, error)
     assert os.path.getsize(target) > 6002 * 10
+
+
+def test_grid_locator_from_python():
+    # A VTK point locator: the queries of vtkAbstractPointLocator, the batched table and the
+    # detectors' SetLocator().
+    from vtkmodules.vtkCommonDataModel import vtkAbstractPointLocator, vtkStaticPointLocator
+    cloud = read(FRACTAL).GetOutput()
+    points = vtk_to_numpy(cloud.GetPoints().GetData()).astype(float)
+    locator = vtkPointCloudGridLocator()
+    assert isinstance(locator, vtkAbstractPointLocator)
+    locator.SetDataSet(cloud)
+    locator.BuildLocator()
+    assert locator.GetNumberOfGridPoints() == 7212
+    x = points[100] + 0.001
+    distances = np.linalg.norm(points - x, axis=1)
+    found = vtkIdList()
+    locator.FindClosestNPoints(10, x, found)
+    assert [found.GetId(j) for j in range(10)] == list(np.argsort(distances, kind="stable")[:10])
+    assert locator.FindClosestPoint(x) == int(np.argmin(distances))
+    radius = float(np.sort(distances)[20])
+    locator.FindPointsWithinRadius(radius, x, found)
+    assert sorted(found.GetId(j) for j in range(found.GetNumberOfIds())) == \
+        sorted(np.nonzero(distances <= radius)[0])
+    ids = vtkIdList()
+    for i in range(0, 7212, 997):
+        ids.InsertNextId(i)
+    table = vtkIntArray()
+    assert locator.FindNearestNeighbors(6, ids, table)
+    rows = vtk_to_numpy(table)
+    for r in range(ids.GetNumberOfIds()):
+        d = np.linalg.norm(points - points[ids.GetId(r)], axis=1)
+        d[ids.GetId(r)] = np.inf
+        assert np.allclose(np.sort(d)[:6], d[rows[r]], rtol=1e-12, atol=0)
+    # A detector with another locator finds the same feature points.
+    masks = []
+    for other in (None, vtkStaticPointLocator()):
+        detector = vtkCreaseVotingFeatures()
+        if other is not None:
+            detector.SetLocator(other)
+        assert detector.GetLocator() is not None
+        detector.SetInputData(cloud)
+        detector.Update()
+        masks.append(vtk_to_numpy(detector.GetOutput().GetPointData().GetArray("FeatureMask")))
+    assert masks[0].sum() > 100 and np.array_equal(masks[0], masks[1])
 
 
 def test_neighborhoods_and_voxel_screen_from_python():

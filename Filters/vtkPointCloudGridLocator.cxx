@@ -1,0 +1,1196 @@
+#include "vtkPointCloudGridLocator.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFeaturePointsLocalPCA.h"
+#include "vtkFeaturePointsStatistics.h"
+#include "vtkFeaturePointsTables.h"
+#include "vtkIdList.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+vtkStandardNewMacro(vtkPointCloudGridLocator);
+
+struct vtkPointCloudGridLocator::SearchGrid
+{
+  double Origin[3] = { 0, 0, 0 };
+  double Spacing = 1.0; // side of a cell
+  int Dims[3] = { 1, 1, 1 };
+  std::vector<int32_t> CellStart;   // first slot of each cell, then the number of slots
+  std::vector<int32_t> SortedIds;   // point id of each slot, cell by cell, ascending in a cell
+  // Coordinates of each slot: an array that ReorderSpatially() hands out as the renumbered
+  // points (shared, so that they outlive the grid), and a pointer to its values.
+  vtkSmartPointer<vtkDoubleArray> Coordinates;
+  double* SortedPoints = nullptr;
+  std::vector<int32_t> SlotOf;      // slot of each point, -1 for invalid points
+
+  // Coincident points (BuildSites(), only when some points coincide): the distinct positions of
+  // each cell ("sites"), each with its points, so that a query reads a stack of copies once
+  // rather than once per copy.
+  bool HasDuplicates = false;
+  std::vector<int32_t> SiteStart;   // first site of each cell, then the number of sites
+  std::vector<double> SitePoints;   // coordinates of each site
+  std::vector<int32_t> MemberStart; // first member of each site, then the number of members
+  std::vector<int32_t> Members;     // slots of the points of each site, ascending
+
+  vtkIdType Index(int i, int j, int k) const
+  {
+    return i + this->Dims[0] * (j + static_cast<vtkIdType>(this->Dims[1]) * k);
+  }
+  // Squared distance from x to the box of cell (i, j, k); border cells are open on their outer side.
+  double BoxDistance2(int i, int j, int k, const double x[3]) const
+  {
+    const int c[3] = { i, j, k };
+    double d2 = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double gap = this->AxisGap(a, c[a], x[a]);
+      d2 += gap * gap;
+    }
+    return d2;
+  }
+  // Distance from coordinate xa to the slab of cells c along axis a.
+  double AxisGap(int a, int c, double xa) const
+  {
+    const double lo = this->Origin[a] + c * this->Spacing;
+    return c > 0 && xa < lo
+      ? lo - xa
+      : (c < this->Dims[a] - 1 && xa > lo + this->Spacing ? xa - lo - this->Spacing : 0.0);
+  }
+  // The cells at Chebyshev distance `ring` from cell c: whole rows on the block's faces, the two
+  // end cells of the rows inside it.
+  template <typename F>
+  void ForEachCellOfRing(const int c[3], int ring, F&& f) const
+  {
+    const int lo[3] = { std::max(c[0] - ring, 0), std::max(c[1] - ring, 0),
+      std::max(c[2] - ring, 0) };
+    const int hi[3] = { std::min(c[0] + ring, this->Dims[0] - 1),
+      std::min(c[1] + ring, this->Dims[1] - 1), std::min(c[2] + ring, this->Dims[2] - 1) };
+    for (int k = lo[2]; k <= hi[2]; ++k)
+    {
+      const bool kFace = k == c[2] - ring || k == c[2] + ring;
+      for (int j = lo[1]; j <= hi[1]; ++j)
+      {
+        if (kFace || j == c[1] - ring || j == c[1] + ring)
+        {
+          for (int i = lo[0]; i <= hi[0]; ++i)
+          {
+            f(i, j, k);
+          }
+        }
+        else
+        {
+          if (c[0] - ring >= 0)
+          {
+            f(c[0] - ring, j, k);
+          }
+          if (c[0] + ring < this->Dims[0])
+          {
+            f(c[0] + ring, j, k);
+          }
+        }
+      }
+    }
+  }
+  // Distance from x to the cells outside the block of rings 0..ring around cell c (any point not
+  // yet seen lies there); `everything` tells that the block covers the whole grid.
+  double RingGap(const int c[3], int ring, const double x[3], bool& everything) const
+  {
+    everything = true;
+    double gap = VTK_DOUBLE_MAX;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (c[a] - ring > 0)
+      {
+        gap = std::min(gap, x[a] - (this->Origin[a] + (c[a] - ring) * this->Spacing));
+        everything = false;
+      }
+      if (c[a] + ring < this->Dims[a] - 1)
+      {
+        gap = std::min(gap, this->Origin[a] + (c[a] + ring + 1) * this->Spacing - x[a]);
+        everything = false;
+      }
+    }
+    return gap;
+  }
+  // The cell of x, clamped to the grid: points beyond the robust box sit in its border cells.
+  void CellOf(const double x[3], int c[3]) const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double f = std::floor((x[a] - this->Origin[a]) / this->Spacing);
+      c[a] = f < 0.0 ? 0 : (f >= this->Dims[a] - 1 ? this->Dims[a] - 1 : static_cast<int>(f));
+    }
+  }
+};
+
+namespace
+{
+
+// Exact nearest points on the grid: rings of cells around the query's cell, nearest first, until
+// the k-th best distance is below the distance to the unsearched cells. Candidates are ordered by
+// (distance, id), so ties are broken the same way whatever the scanning order, and each answer
+// depends on its query only.
+struct GridQuery
+{
+  const vtkPointCloudGridLocator::SearchGrid* Grid;
+  int K;
+
+  struct Candidate
+  {
+    double D2;
+    int32_t Id;
+    bool operator<(const Candidate& o) const { return D2 < o.D2 || (D2 == o.D2 && Id < o.Id); }
+  };
+  struct BucketScratch
+  {
+    std::vector<Candidate> Sorted;
+    std::vector<int32_t> Start;
+  };
+
+  // Sorts the candidates by (distance, id) and keeps the first `keep`: a bucket sort on the
+  // squared distance (about one candidate per bucket, buckets in distance order, each bucket then
+  // sorted exactly), which costs a few passes where nth_element and sort compare and mispredict
+  // O(m log m) times. Buckets past the one that holds the keep-th candidate are never sorted.
+  static void SortNearest(std::vector<Candidate>& candidates, size_t keep, BucketScratch& scratch)
+  {
+    const size_t m = candidates.size();
+    if (m <= 16)
+    {
+      std::sort(candidates.begin(), candidates.end());
+      candidates.resize(std::min(m, keep));
+      return;
+    }
+    double largest = 0.0;
+    for (const Candidate& c : candidates)
+    {
+      largest = std::max(largest, c.D2);
+    }
+    if (!std::isfinite(largest))
+    {
+      // Squared distances that overflow (coordinates beyond 1e154) have no bucket: plain sort.
+      std::sort(candidates.begin(), candidates.end());
+      candidates.resize(std::min(m, keep));
+      return;
+    }
+    const int32_t buckets = static_cast<int32_t>(m);
+    // Monotone in D2: a larger distance never lands in an earlier bucket.
+    const double scale = largest > 0.0 ? (buckets - 0.5) / largest : 0.0;
+    auto bucketOf = [scale, buckets](double d2) {
+      return std::min(buckets - 1, static_cast<int32_t>(d2 * scale));
+    };
+    std::vector<int32_t>& start = scratch.Start;
+    start.assign(static_cast<size_t>(buckets) + 1, 0);
+    for (const Candidate& c : candidates)
+    {
+      ++start[bucketOf(c.D2) + 1];
+    }
+    for (int32_t b = 0; b < buckets; ++b)
+    {
+      start[b + 1] += start[b];
+    }
+    std::vector<Candidate>& sorted = scratch.Sorted;
+    sorted.resize(m);
+    {
+      // Scatter, using start[b] as the next free slot of bucket b (restored below).
+      for (const Candidate& c : candidates)
+      {
+        sorted[start[bucketOf(c.D2)]++] = c;
+      }
+      for (int32_t b = buckets; b > 0; --b)
+      {
+        start[b] = start[b - 1];
+      }
+      start[0] = 0;
+    }
+    size_t done = 0;
+    for (int32_t b = 0; b < buckets && done < keep; ++b)
+    {
+      if (start[b + 1] - start[b] > 1)
+      {
+        std::sort(sorted.begin() + start[b], sorted.begin() + start[b + 1]);
+      }
+      done = static_cast<size_t>(start[b + 1]);
+    }
+    const size_t kept = std::min(m, keep);
+    std::copy(sorted.begin(), sorted.begin() + kept, candidates.begin());
+    candidates.resize(kept);
+  }
+
+  // k = 1 (the spacing and the voxel densities ask it of every point): the best candidate is kept
+  // in registers rather than in a heap, the cells of the first ring are pruned with per-axis gaps
+  // computed once, and the search stops at the same ring as the general one, with the same result.
+  // Distinct: the nearest point at a nonzero distance (copies of x are skipped).
+  template <bool Distinct>
+  Candidate NearestOne(const double* x, int32_t id) const
+  {
+    const auto& g = *this->Grid;
+    Candidate best{ VTK_DOUBLE_MAX, -1 };
+    auto scanCell = [&](vtkIdType cell) {
+      if (g.HasDuplicates)
+      {
+        // A site's nearest candidate is its first point other than x.
+        for (int32_t site = g.SiteStart[cell]; site < g.SiteStart[cell + 1]; ++site)
+        {
+          const double* y = g.SitePoints.data() + 3 * static_cast<size_t>(site);
+          const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          if (d2 <= best.D2 && (!Distinct || d2 > 0.0))
+          {
+            int32_t m = g.MemberStart[site];
+            int32_t other = g.SortedIds[g.Members[m]];
+            if (other == id)
+            {
+              if (++m == g.MemberStart[site + 1])
+              {
+                continue;
+              }
+              other = g.SortedIds[g.Members[m]];
+            }
+            if (d2 < best.D2 || other < best.Id)
+            {
+              best = Candidate{ d2, other };
+            }
+          }
+        }
+        return;
+      }
+      const int32_t last = g.CellStart[cell + 1];
+      const double* y = g.SortedPoints + 3 * static_cast<size_t>(g.CellStart[cell]);
+      for (int32_t s = g.CellStart[cell]; s < last; ++s, y += 3)
+      {
+        const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        if (d2 <= best.D2 && (!Distinct || d2 > 0.0))
+        {
+          const int32_t other = g.SortedIds[s];
+          if (other != id && (d2 < best.D2 || other < best.Id))
+          {
+            best = Candidate{ d2, other };
+          }
+        }
+      }
+    };
+    int c[3];
+    g.CellOf(x, c);
+    // Per axis, the squared gap from x to the cells c - 1, c, c + 1 (-1: outside the grid).
+    double gap2[3][3];
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        const int ca = c[a] + d - 1;
+        const double gap = ca >= 0 && ca < g.Dims[a] ? g.AxisGap(a, ca, x[a]) : -1.0;
+        gap2[a][d] = gap < 0.0 ? -1.0 : gap * gap;
+      }
+    }
+    scanCell(g.Index(c[0], c[1], c[2]));
+    // The general rule of the k-nearest search, ring by ring: stop when the best distance is
+    // below the distance to the unsearched cells (or nothing is left).
+    for (int ring = 0;; ++ring)
+    {
+      if (ring == 1)
+      {
+        for (int dk = 0; dk < 3; ++dk)
+        {
+          if (gap2[2][dk] < 0.0)
+          {
+            continue;
+          }
+          for (int dj = 0; dj < 3; ++dj)
+          {
+            if (gap2[1][dj] < 0.0)
+            {
+              continue;
+            }
+            for (int di = 0; di < 3; ++di)
+            {
+              if (gap2[0][di] < 0.0 || (di == 1 && dj == 1 && dk == 1))
+              {
+                continue;
+              }
+              // The sum in BoxDistance2's order, so that the same cells are pruned.
+              if (best.Id >= 0 && gap2[0][di] + gap2[1][dj] + gap2[2][dk] > best.D2)
+              {
+                continue;
+              }
+              scanCell(g.Index(c[0] + di - 1, c[1] + dj - 1, c[2] + dk - 1));
+            }
+          }
+        }
+      }
+      else if (ring > 1)
+      {
+        g.ForEachCellOfRing(c, ring, [&](int i, int j, int k) {
+          if (best.Id < 0 || g.BoxDistance2(i, j, k, x) <= best.D2)
+          {
+            scanCell(g.Index(i, j, k));
+          }
+        });
+      }
+      bool everything;
+      const double gap = g.RingGap(c, ring, x, everything);
+      if (best.Id >= 0 ? (everything || (gap > 0.0 && best.D2 < gap * gap)) : everything)
+      {
+        return best;
+      }
+    }
+  }
+
+  // The K nearest points of x other than point `id` (-1: none skipped) into `row`, -1 past the
+  // last one found; returns the distance to the nearest (0 when none). `hint`: see operator().
+  double NearestK(const double* x, int32_t id, int32_t* row, double& hint,
+    std::vector<Candidate>& candidates, BucketScratch& bucketScratch) const
+  {
+    const auto& g = *this->Grid;
+    int n = 0;
+    double nearest = 0.0;
+    {
+      candidates.clear();
+      const bool useHeap = this->K <= 8;
+      // Large k: once k candidates are known, nothing farther than the k-th can enter. Before
+      // that, a guess from the previous query (1.2 times its k-th distance) keeps the far points
+      // and cells out; when fewer than k points lie within it, the search starts again without.
+      bool guessed = !useHeap && hint > 0.0;
+      double bound = guessed ? 1.44 * hint : VTK_DOUBLE_MAX;
+      int c[3];
+      g.CellOf(x, c);
+      for (int ring = 0;; ++ring)
+      {
+        auto scan = [&](int i, int j, int k) {
+          // Skip a cell whose box lies farther than the k-th best distance so far: none of its
+          // points can enter (the border cells reach to infinity, they hold the clamped points).
+          const double limit = useHeap
+            ? (static_cast<int>(candidates.size()) == this->K ? candidates.front().D2 : VTK_DOUBLE_MAX)
+            : bound;
+          if (limit < VTK_DOUBLE_MAX && g.BoxDistance2(i, j, k, x) > limit)
+          {
+            return;
+          }
+          const vtkIdType cell = g.Index(i, j, k);
+          // Offers a candidate; false when it is not kept.
+          auto offer = [&](const Candidate& cand) {
+            if (!useHeap)
+            {
+              if (cand.D2 <= bound)
+              {
+                candidates.push_back(cand);
+                return true;
+              }
+              return false;
+            }
+            if (static_cast<int>(candidates.size()) < this->K)
+            {
+              candidates.push_back(cand);
+              std::push_heap(candidates.begin(), candidates.end());
+              return true;
+            }
+            if (cand < candidates.front())
+            {
+              std::pop_heap(candidates.begin(), candidates.end());
+              candidates.back() = cand;
+              std::push_heap(candidates.begin(), candidates.end());
+              return true;
+            }
+            return false;
+          };
+          if (g.HasDuplicates)
+          {
+            // The points of a site share their distance and come in ascending ids: at most K
+            // of them can be among the K nearest, the first K other than the query, and once
+            // one is not kept none of the next ones is.
+            for (int32_t site = g.SiteStart[cell]; site < g.SiteStart[cell + 1]; ++site)
+            {
+              const double* y = g.SitePoints.data() + 3 * static_cast<size_t>(site);
+              const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+              const double d2 = dx * dx + dy * dy + dz * dz;
+              int kept = 0;
+              for (int32_t m = g.MemberStart[site]; m < g.MemberStart[site + 1] && kept < this->K;
+                   ++m)
+              {
+                const int32_t other = g.SortedIds[g.Members[m]];
+                if (other == id)
+                {
+                  continue;
+                }
+                if (!offer(Candidate{ d2, other }))
+                {
+                  break;
+                }
+                ++kept;
+              }
+            }
+            return;
+          }
+          for (int32_t s = g.CellStart[cell]; s < g.CellStart[cell + 1]; ++s)
+          {
+            const int32_t other = g.SortedIds[s];
+            if (other == id)
+            {
+              continue;
+            }
+            const double* y = g.SortedPoints + 3 * static_cast<size_t>(s);
+            const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+            offer(Candidate{ dx * dx + dy * dy + dz * dz, other });
+          }
+        };
+        g.ForEachCellOfRing(c, ring, scan);
+        bool everything;
+        const double gap = g.RingGap(c, ring, x, everything);
+        // Small k: a bounded max-heap of the k best. Large k: the candidates nearer than the
+        // k-th best so far are kept, and once per ring they are sorted (SortNearest) and cut
+        // to k, which costs less than a heap.
+        if (useHeap && static_cast<int>(candidates.size()) == this->K)
+        {
+          if (everything || (gap > 0.0 && candidates.front().D2 < gap * gap))
+          {
+            break;
+          }
+        }
+        else if (!useHeap && static_cast<int>(candidates.size()) >= this->K)
+        {
+          SortNearest(candidates, static_cast<size_t>(this->K), bucketScratch);
+          bound = candidates[this->K - 1].D2;
+          if (everything || (gap > 0.0 && bound < gap * gap))
+          {
+            break;
+          }
+        }
+        else if (guessed && (everything || (gap > 0.0 && bound < gap * gap)))
+        {
+          // Fewer than k points within the guess, and none left to find there: no guess.
+          candidates.clear();
+          bound = VTK_DOUBLE_MAX;
+          guessed = false;
+          ring = -1;
+          continue;
+        }
+        else if (everything)
+        {
+          break;
+        }
+      }
+      if (useHeap || static_cast<int>(candidates.size()) < this->K)
+      {
+        std::sort(candidates.begin(), candidates.end()); // (large k: sorted when trimmed)
+      }
+      if (!useHeap && static_cast<int>(candidates.size()) == this->K)
+      {
+        hint = candidates.back().D2;
+      }
+      for (const Candidate& cand : candidates)
+      {
+        row[n++] = cand.Id;
+      }
+      if (n > 0)
+      {
+        nearest = std::sqrt(candidates.front().D2);
+      }
+    }
+    for (; n < this->K; ++n)
+    {
+      row[n] = -1;
+    }
+    return nearest;
+  }
+};
+
+// The batched query: one row per listed point of the grid, the queries taken in grid order (by
+// slot), so that consecutive queries read the same cells and their coordinates in sequence.
+struct GridNeighborsWorker
+{
+  GridQuery Query;
+  const int32_t* Slots;  // the queries' slots, in grid order
+  const vtkIdType* Rows; // the table row of each of them
+  int32_t* Table;
+  double* Nearest;
+  bool Distinct; // K = 1 only: the nearest point at a nonzero distance
+  vtkSMPThreadLocal<std::vector<GridQuery::Candidate>> Candidates;
+  vtkSMPThreadLocal<GridQuery::BucketScratch> Buckets;
+
+  void Initialize() {}
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    if (this->Query.K == 1)
+    {
+      const auto& g = *this->Query.Grid;
+      for (vtkIdType o = begin; o < end; ++o)
+      {
+        const int32_t slot = this->Slots[o];
+        const vtkIdType r = this->Rows[o];
+        const double* x = g.SortedPoints + 3 * static_cast<size_t>(slot);
+        const GridQuery::Candidate best = this->Distinct
+          ? this->Query.NearestOne<true>(x, g.SortedIds[slot])
+          : this->Query.NearestOne<false>(x, g.SortedIds[slot]);
+        this->Table[r] = best.Id;
+        if (this->Nearest)
+        {
+          this->Nearest[r] = best.Id >= 0 ? std::sqrt(best.D2) : 0.0;
+        }
+      }
+      return;
+    }
+    std::vector<GridQuery::Candidate>& candidates = this->Candidates.Local();
+    GridQuery::BucketScratch& bucketScratch = this->Buckets.Local();
+    const auto& g = *this->Query.Grid;
+    // Large k: the k-th squared distance of the previous query, a guess for this one (queries come
+    // in grid order, so neighbouring queries follow each other). The result never depends on it.
+    double hint = -1.0;
+    for (vtkIdType o = begin; o < end; ++o)
+    {
+      // Queries in grid order read their coordinates in sequence, from the grid's own copy.
+      const int32_t slot = this->Slots[o];
+      const vtkIdType r = this->Rows[o];
+      const double nearest = this->Query.NearestK(g.SortedPoints + 3 * static_cast<size_t>(slot),
+        g.SortedIds[slot], this->Table + r * this->Query.K, hint, candidates, bucketScratch);
+      if (this->Nearest)
+      {
+        this->Nearest[r] = nearest;
+      }
+    }
+  }
+
+  void Reduce() {}
+};
+} // namespace
+
+void vtkPointCloudGridLocator::BuildGrid(vtkPoints* points,
+  const std::vector<unsigned char>& valid, const double bounds[6], vtkIdType m)
+{
+  this->Grid.reset(new SearchGrid);
+  SearchGrid& g = *this->Grid;
+  const vtkIdType n = points->GetNumberOfPoints();
+  const featurepoints::PointReader reader(points);
+
+  // The box: the bounds, or the central 99 % of the points widened by half its size when a few
+  // far outliers stretch the bounds more than four times (they then share the border cells).
+  double lo[3], hi[3];
+  {
+    const vtkIdType stride = std::max<vtkIdType>(1, m / 100000);
+    std::vector<double> sample[3];
+    double x[3];
+    vtkIdType seen = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (valid[i] && (seen++ % stride) == 0)
+      {
+        reader.Get(i, x);
+        for (int a = 0; a < 3; ++a)
+        {
+          sample[a].push_back(x[a]);
+        }
+      }
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = bounds[2 * a];
+      hi[a] = bounds[2 * a + 1];
+      std::vector<double>& v = sample[a];
+      double rlo, rhi;
+      featurepoints::CentralRange(v, rlo, rhi);
+      const double robust = rhi - rlo;
+      if (robust > 0.0 && hi[a] - lo[a] > 4.0 * robust)
+      {
+        lo[a] = std::max(lo[a], rlo - 0.5 * robust);
+        hi[a] = std::min(hi[a], rhi + 0.5 * robust);
+      }
+    }
+  }
+  // Cell side: the smallest for which the grid has at most two cells per point.
+  double extent[3], largest = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    extent[a] = hi[a] - lo[a];
+    largest = std::max(largest, extent[a]);
+  }
+  if (!(largest > 0.0))
+  {
+    largest = 1.0;
+  }
+  const double cells = 2.0 * static_cast<double>(m);
+  auto count = [&](double h) {
+    double product = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      product *= std::max(1.0, std::ceil(extent[a] / h));
+    }
+    return product;
+  };
+  double small = largest * 1e-7, big = largest * 1.000001;
+  for (int iteration = 0; iteration < 100 && big / small > 1.0001; ++iteration)
+  {
+    const double h = std::sqrt(small * big);
+    (count(h) > cells ? small : big) = h;
+  }
+  g.Spacing = big;
+  for (int a = 0; a < 3; ++a)
+  {
+    g.Origin[a] = lo[a];
+    g.Dims[a] = static_cast<int>(std::max(1.0, std::ceil(extent[a] / g.Spacing)));
+  }
+  const vtkIdType numberOfCells = static_cast<vtkIdType>(g.Dims[0]) * g.Dims[1] * g.Dims[2];
+
+  // Counting sort of the valid points by cell, ascending ids within a cell.
+  std::vector<int64_t> cellOf(n, -1);
+  g.CellStart.assign(numberOfCells + 1, 0);
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    double x[3];
+    int c[3];
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      if (valid[i])
+      {
+        reader.Get(i, x);
+        g.CellOf(x, c);
+        cellOf[i] = g.Index(c[0], c[1], c[2]);
+      }
+    }
+  });
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (cellOf[i] >= 0)
+    {
+      ++g.CellStart[cellOf[i] + 1];
+    }
+  }
+  std::partial_sum(g.CellStart.begin(), g.CellStart.end(), g.CellStart.begin());
+  g.SortedIds.resize(m);
+  g.Coordinates = vtkSmartPointer<vtkDoubleArray>::New();
+  g.Coordinates->SetNumberOfComponents(3);
+  g.Coordinates->SetNumberOfTuples(m);
+  g.SortedPoints = g.Coordinates->GetPointer(0);
+  std::vector<int32_t> next(g.CellStart.begin(), g.CellStart.end() - 1);
+  g.SlotOf.assign(n, -1);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (cellOf[i] >= 0)
+    {
+      const int32_t slot = next[cellOf[i]]++;
+      g.SlotOf[i] = slot;
+      g.SortedIds[slot] = static_cast<int32_t>(i);
+      reader.Get(i, g.SortedPoints + 3 * static_cast<size_t>(slot));
+    }
+  }
+  this->BuildSites();
+}
+
+void vtkPointCloudGridLocator::BuildSites()
+{
+  SearchGrid& g = *this->Grid;
+  const vtkIdType numberOfCells = static_cast<vtkIdType>(g.CellStart.size()) - 1;
+  const double* p = g.SortedPoints;
+  auto byPosition = [p](int32_t a, int32_t b) {
+    const double* x = p + 3 * static_cast<size_t>(a);
+    const double* y = p + 3 * static_cast<size_t>(b);
+    return x[0] != y[0] ? x[0] < y[0] : x[1] != y[1] ? x[1] < y[1] : x[2] != y[2] ? x[2] < y[2] : a < b;
+  };
+  auto same = [p](int32_t a, int32_t b) {
+    const double* x = p + 3 * static_cast<size_t>(a);
+    const double* y = p + 3 * static_cast<size_t>(b);
+    return x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
+  };
+  // Whether any cell holds two points at one position (most clouds: none, and the grid stays as
+  // it is); cells are checked in parallel, each on its own.
+  std::vector<unsigned char> cellHasCopies(numberOfCells, 0);
+  vtkSMPTools::For(0, numberOfCells, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<int32_t> slots;
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      const int32_t first = g.CellStart[cell], last = g.CellStart[cell + 1];
+      if (last - first < 2)
+      {
+        continue;
+      }
+      slots.resize(last - first);
+      std::iota(slots.begin(), slots.end(), first);
+      std::sort(slots.begin(), slots.end(), byPosition);
+      for (size_t s = 1; s < slots.size() && !cellHasCopies[cell]; ++s)
+      {
+        cellHasCopies[cell] = same(slots[s - 1], slots[s]) ? 1 : 0;
+      }
+    }
+  });
+  g.HasDuplicates = std::find(cellHasCopies.begin(), cellHasCopies.end(), 1) != cellHasCopies.end();
+  if (!g.HasDuplicates)
+  {
+    return;
+  }
+  // The sites of each cell in the order of their first point, their points ascending.
+  g.SiteStart.assign(numberOfCells + 1, 0);
+  g.SitePoints.clear();
+  g.MemberStart.assign(1, 0);
+  g.Members.clear();
+  g.Members.reserve(g.SortedIds.size());
+  std::vector<int32_t> slots;
+  std::vector<std::pair<int32_t, int32_t>> groups; // first slot, position in `slots`
+  for (vtkIdType cell = 0; cell < numberOfCells; ++cell)
+  {
+    const int32_t first = g.CellStart[cell], last = g.CellStart[cell + 1];
+    slots.resize(last - first);
+    std::iota(slots.begin(), slots.end(), first);
+    if (cellHasCopies[cell])
+    {
+      std::sort(slots.begin(), slots.end(), byPosition);
+    }
+    groups.clear();
+    for (size_t s = 0; s < slots.size(); ++s)
+    {
+      if (s == 0 || !same(slots[s - 1], slots[s]))
+      {
+        groups.emplace_back(slots[s], static_cast<int32_t>(s));
+      }
+    }
+    std::sort(groups.begin(), groups.end());
+    for (const auto& group : groups)
+    {
+      const double* x = p + 3 * static_cast<size_t>(group.first);
+      g.SitePoints.insert(g.SitePoints.end(), x, x + 3);
+      for (size_t s = group.second; s < slots.size() && same(slots[s], group.first); ++s)
+      {
+        g.Members.push_back(slots[s]);
+      }
+      g.MemberStart.push_back(static_cast<int32_t>(g.Members.size()));
+    }
+    g.SiteStart[cell + 1] = g.SiteStart[cell] + static_cast<int32_t>(groups.size());
+  }
+}
+
+bool vtkPointCloudGridLocator::FindNearestNeighbors(int k, const std::vector<vtkIdType>& ids,
+  std::vector<int32_t>& table, std::vector<double>* nearestDistances, bool distinct,
+  vtkAlgorithm* progressAlg, double progressStart, double progressEnd)
+{
+  const vtkIdType rows = static_cast<vtkIdType>(ids.size());
+  table.resize(static_cast<size_t>(rows) * std::max(k, 0));
+  if (nearestDistances)
+  {
+    nearestDistances->resize(rows);
+  }
+  if (k <= 0)
+  {
+    return true;
+  }
+  this->BuildLocator();
+  if (!this->Grid)
+  {
+    std::fill(table.begin(), table.end(), -1);
+    if (nearestDistances)
+    {
+      std::fill(nearestDistances->begin(), nearestDistances->end(), 0.0);
+    }
+    return true;
+  }
+  const SearchGrid& g = *this->Grid;
+  // The queries in grid order (by their slot), so that neighbouring queries read the same cells
+  // and their coordinates in sequence. Rows of invalid points are filled here.
+  const int32_t k32 = k;
+  std::vector<vtkIdType> rowOfSlot(g.SortedIds.size(), -1);
+  std::vector<std::pair<int32_t, vtkIdType>> repeated; // an id listed twice
+  const vtkIdType n = static_cast<vtkIdType>(g.SlotOf.size());
+  for (vtkIdType r = 0; r < rows; ++r)
+  {
+    const int32_t slot = ids[r] >= 0 && ids[r] < n ? g.SlotOf[ids[r]] : -1;
+    if (slot < 0)
+    {
+      std::fill_n(table.data() + r * k32, k32, -1);
+      if (nearestDistances)
+      {
+        (*nearestDistances)[r] = 0.0;
+      }
+    }
+    else if (rowOfSlot[slot] >= 0)
+    {
+      repeated.emplace_back(slot, r);
+    }
+    else
+    {
+      rowOfSlot[slot] = r;
+    }
+  }
+  std::vector<int32_t> slots;
+  std::vector<vtkIdType> order;
+  slots.reserve(rows);
+  order.reserve(rows);
+  for (size_t slot = 0; slot < rowOfSlot.size(); ++slot)
+  {
+    if (rowOfSlot[slot] >= 0)
+    {
+      slots.push_back(static_cast<int32_t>(slot));
+      order.push_back(rowOfSlot[slot]);
+    }
+  }
+  for (const auto& extra : repeated)
+  {
+    slots.push_back(extra.first);
+    order.push_back(extra.second);
+  }
+  std::vector<vtkIdType>().swap(rowOfSlot);
+  const vtkIdType queries = static_cast<vtkIdType>(slots.size());
+
+  GridNeighborsWorker worker{ { &g, k }, slots.data(), order.data(), table.data(),
+    nearestDistances ? nearestDistances->data() : nullptr, distinct && k == 1, {}, {} };
+  const vtkIdType batch = std::max<vtkIdType>(20000, queries / 50);
+  for (vtkIdType begin = 0; begin < queries; begin += batch)
+  {
+    const vtkIdType end = std::min(queries, begin + batch);
+    vtkSMPTools::For(begin, end, worker);
+    if (progressAlg)
+    {
+      progressAlg->UpdateProgress(progressStart +
+        (progressEnd - progressStart) * static_cast<double>(end) / static_cast<double>(queries));
+      if (progressAlg->GetAbortExecute())
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+vtkPointCloudGridLocator::vtkPointCloudGridLocator() = default;
+vtkPointCloudGridLocator::~vtkPointCloudGridLocator() = default;
+
+void vtkPointCloudGridLocator::FreeSearchStructure()
+{
+  this->Grid.reset();
+  this->NumberOfBuckets = 0;
+}
+
+void vtkPointCloudGridLocator::BuildLocator()
+{
+  if (this->Grid && this->BuildTime > this->MTime && this->DataSet &&
+    this->BuildTime > this->DataSet->GetMTime())
+  {
+    return;
+  }
+  this->FreeSearchStructure();
+  std::fill(this->Bounds, this->Bounds + 6, 0.0);
+  if (!this->DataSet)
+  {
+    vtkErrorMacro(<< "No data set to build the grid over.");
+    return;
+  }
+  const vtkIdType n = this->DataSet->GetNumberOfPoints();
+  if (n > std::numeric_limits<int32_t>::max())
+  {
+    vtkErrorMacro(<< "The data set has " << n << " points, more than the 2^31 - 1 this grid holds.");
+    return;
+  }
+  // The points as a vtkPoints (a data set that is not a vtkPointSet gives a copy).
+  vtkSmartPointer<vtkPoints> points;
+  if (auto* pointSet = vtkPointSet::SafeDownCast(this->DataSet))
+  {
+    points = pointSet->GetPoints();
+  }
+  if (!points)
+  {
+    points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      points->SetPoint(i, this->DataSet->GetPoint(i));
+    }
+  }
+
+  // The finite points and their bounds: a NaN coordinate has no cell.
+  const featurepoints::PointReader reader(points);
+  std::vector<unsigned char> valid(n, 0);
+  vtkIdType m = 0;
+  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  double x[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    reader.Get(i, x);
+    if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
+    {
+      valid[i] = 1;
+      ++m;
+      for (int a = 0; a < 3; ++a)
+      {
+        bounds[2 * a] = std::min(bounds[2 * a], x[a]);
+        bounds[2 * a + 1] = std::max(bounds[2 * a + 1], x[a]);
+      }
+    }
+  }
+  if (m == 0)
+  {
+    // No finite point: one empty cell, so that every query finds nothing.
+    this->Grid.reset(new SearchGrid);
+    this->Grid->CellStart.assign(2, 0);
+    this->Grid->SlotOf.assign(n, -1);
+    this->Grid->Coordinates = vtkSmartPointer<vtkDoubleArray>::New();
+    this->Grid->Coordinates->SetNumberOfComponents(3);
+  }
+  else
+  {
+    std::copy(bounds, bounds + 6, this->Bounds);
+    this->BuildGrid(points, valid, bounds, m);
+  }
+  const SearchGrid& g = *this->Grid;
+  this->NumberOfBuckets = static_cast<vtkIdType>(g.Dims[0]) * g.Dims[1] * g.Dims[2];
+  this->BuildTime.Modified();
+}
+
+namespace
+{
+bool IsFinite(const double x[3])
+{
+  return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+}
+} // namespace
+
+vtkIdType vtkPointCloudGridLocator::FindClosestPoint(const double x[3])
+{
+  this->BuildLocator();
+  if (!this->Grid || !IsFinite(x))
+  {
+    return -1;
+  }
+  return GridQuery{ this->Grid.get(), 1 }.NearestOne<false>(x, -1).Id;
+}
+
+vtkIdType vtkPointCloudGridLocator::FindClosestPointWithinRadius(
+  double radius, const double x[3], double& dist2)
+{
+  this->BuildLocator();
+  dist2 = -1.0;
+  if (!this->Grid || !IsFinite(x))
+  {
+    return -1;
+  }
+  const GridQuery::Candidate best = GridQuery{ this->Grid.get(), 1 }.NearestOne<false>(x, -1);
+  if (best.Id < 0 || best.D2 > radius * radius)
+  {
+    return -1;
+  }
+  dist2 = best.D2;
+  return best.Id;
+}
+
+void vtkPointCloudGridLocator::FindClosestNPoints(int N, const double x[3], vtkIdList* result)
+{
+  result->Reset();
+  this->BuildLocator();
+  if (!this->Grid || !IsFinite(x) || N <= 0)
+  {
+    return;
+  }
+  const GridQuery query{ this->Grid.get(), N };
+  std::vector<int32_t> row(N);
+  std::vector<GridQuery::Candidate> candidates;
+  GridQuery::BucketScratch scratch;
+  double hint = -1.0;
+  query.NearestK(x, -1, row.data(), hint, candidates, scratch);
+  for (int j = 0; j < N && row[j] >= 0; ++j)
+  {
+    result->InsertNextId(row[j]);
+  }
+}
+
+void vtkPointCloudGridLocator::FindPointsWithinRadius(double R, const double x[3], vtkIdList* result)
+{
+  result->Reset();
+  this->BuildLocator();
+  if (!this->Grid || !IsFinite(x) || !(R >= 0.0))
+  {
+    return;
+  }
+  const SearchGrid& g = *this->Grid;
+  const double r2 = R * R;
+  std::vector<GridQuery::Candidate> found;
+  int c[3];
+  g.CellOf(x, c);
+  for (int ring = 0;; ++ring)
+  {
+    g.ForEachCellOfRing(c, ring, [&](int i, int j, int k) {
+      if (g.BoxDistance2(i, j, k, x) > r2)
+      {
+        return;
+      }
+      const vtkIdType cell = g.Index(i, j, k);
+      const double* y = g.SortedPoints + 3 * static_cast<size_t>(g.CellStart[cell]);
+      for (int32_t s = g.CellStart[cell]; s < g.CellStart[cell + 1]; ++s, y += 3)
+      {
+        const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        if (d2 <= r2)
+        {
+          found.push_back(GridQuery::Candidate{ d2, g.SortedIds[s] });
+        }
+      }
+    });
+    // Done when the unsearched cells all lie beyond R.
+    bool everything;
+    const double gap = g.RingGap(c, ring, x, everything);
+    if (everything || (gap > 0.0 && gap > R))
+    {
+      break;
+    }
+  }
+  std::sort(found.begin(), found.end());
+  result->SetNumberOfIds(static_cast<vtkIdType>(found.size()));
+  for (size_t j = 0; j < found.size(); ++j)
+  {
+    result->SetId(static_cast<vtkIdType>(j), found[j].Id);
+  }
+}
+
+void vtkPointCloudGridLocator::GenerateRepresentation(int, vtkPolyData* pd)
+{
+  if (!pd)
+  {
+    return;
+  }
+  this->BuildLocator();
+  vtkNew<vtkPoints> corners;
+  corners->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  if (this->Grid && this->Grid->SortedIds.size() > 0)
+  {
+    const SearchGrid& g = *this->Grid;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      double x[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        x[a] = g.Origin[a] + ((corner >> a) & 1) * g.Dims[a] * g.Spacing;
+      }
+      corners->InsertNextPoint(x);
+    }
+    // The 12 edges: corners that differ along one axis.
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        if (!((corner >> a) & 1))
+        {
+          const vtkIdType edge[2] = { corner, corner | (1 << a) };
+          lines->InsertNextCell(2, edge);
+        }
+      }
+    }
+  }
+  pd->Initialize();
+  pd->SetPoints(corners);
+  pd->SetLines(lines);
+}
+
+void vtkPointCloudGridLocator::GetDivisions(int divisions[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    divisions[a] = this->Grid ? this->Grid->Dims[a] : 0;
+  }
+}
+
+double vtkPointCloudGridLocator::GetCellSize() const
+{
+  return this->Grid ? this->Grid->Spacing : 0.0;
+}
+
+void vtkPointCloudGridLocator::GetOrigin(double origin[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    origin[a] = this->Grid ? this->Grid->Origin[a] : 0.0;
+  }
+}
+
+vtkIdType vtkPointCloudGridLocator::GetNumberOfGridPoints() const
+{
+  return this->Grid ? static_cast<vtkIdType>(this->Grid->SortedIds.size()) : 0;
+}
+
+vtkPoints* vtkPointCloudGridLocator::ReorderSpatially(std::vector<int32_t>& originalIds)
+{
+  if (!this->Grid || !this->DataSet)
+  {
+    return nullptr;
+  }
+  SearchGrid& g = *this->Grid;
+  const vtkIdType n = static_cast<vtkIdType>(g.SlotOf.size());
+  const vtkIdType m = static_cast<vtkIdType>(g.SortedIds.size());
+  // New id i < m is slot i of the grid; the points left out follow, with their own coordinates.
+  originalIds.resize(n);
+  std::copy(g.SortedIds.begin(), g.SortedIds.end(), originalIds.begin());
+  if (n > m)
+  {
+    // Room for the points left out (SetNumberOfTuples() would not keep the values).
+    vtkNew<vtkDoubleArray> longer;
+    longer->SetNumberOfComponents(3);
+    longer->SetNumberOfTuples(n);
+    std::copy(g.SortedPoints, g.SortedPoints + 3 * static_cast<size_t>(m), longer->GetPointer(0));
+    g.Coordinates = longer;
+    g.SortedPoints = g.Coordinates->GetPointer(0);
+  }
+  vtkIdType next = m;
+  for (vtkIdType i = 0; i < n && next < n; ++i)
+  {
+    if (g.SlotOf[i] < 0)
+    {
+      originalIds[next] = static_cast<int32_t>(i);
+      this->DataSet->GetPoint(i, g.SortedPoints + 3 * static_cast<size_t>(next));
+      ++next;
+    }
+  }
+  std::iota(g.SortedIds.begin(), g.SortedIds.end(), 0);
+  std::iota(g.SlotOf.begin(), g.SlotOf.begin() + m, 0);
+  std::fill(g.SlotOf.begin() + m, g.SlotOf.end(), -1);
+
+  // The renumbered points read the grid's coordinates in place; they become the data set, and the
+  // grid stays built over them.
+  vtkNew<vtkPoints> renumbered;
+  renumbered->SetData(g.Coordinates);
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(renumbered);
+  this->SetDataSet(data);
+  this->BuildTime.Modified();
+  return renumbered;
+}
+
+void vtkPointCloudGridLocator::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  int divisions[3];
+  this->GetDivisions(divisions);
+  os << indent << "Divisions: (" << divisions[0] << ", " << divisions[1] << ", " << divisions[2]
+     << ")\n";
+  os << indent << "CellSize: " << this->GetCellSize() << "\n";
+  os << indent << "NumberOfGridPoints: " << this->GetNumberOfGridPoints() << "\n";
+}
+
+// The wrapped counterparts of the methods on std::vector tables (see the header).
+bool vtkPointCloudGridLocator::FindNearestNeighbors(
+  int k, vtkIdList* ids, vtkIntArray* table, vtkDoubleArray* nearestDistances)
+{
+  return featurepoints::FindNearestNeighborsInArrays(k, ids, table, nearestDistances,
+    [&](const std::vector<vtkIdType>& rows, std::vector<int32_t>& entries,
+      std::vector<double>* nearest) { return this->FindNearestNeighbors(k, rows, entries, nearest); });
+}
+
+vtkPoints* vtkPointCloudGridLocator::ReorderSpatially(vtkIntArray* originalIds)
+{
+  std::vector<int32_t> ids;
+  vtkPoints* points = originalIds ? this->ReorderSpatially(ids) : nullptr;
+  if (points)
+  {
+    originalIds->SetNumberOfComponents(1);
+    originalIds->SetNumberOfValues(static_cast<vtkIdType>(ids.size()));
+    std::copy(ids.begin(), ids.end(), originalIds->GetPointer(0));
+  }
+  return points;
+}
