@@ -47,6 +47,13 @@
 
 #include "featurepointsLines.h"
 
+#ifdef FEATUREPOINTS_HAVE_MPI
+#include "vtkDistributedFeaturePoints.h"
+#include "vtkMPI.h"
+#include "vtkMPIController.h"
+#include "vtkMultiProcessController.h"
+#endif
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -529,6 +536,12 @@ void PrintHelp()
 
 bool Quiet = false;
 
+// Under mpiexec with more than one process: the processes (nullptr otherwise), and this one's rank.
+#ifdef FEATUREPOINTS_HAVE_MPI
+vtkMPIController* Processes = nullptr;
+#endif
+int Rank = 0;
+
 [[noreturn]] void Fail(int code, const std::string& message)
 {
   std::fprintf(stderr, "featurepoints: %s\n", message.c_str());
@@ -536,7 +549,28 @@ bool Quiet = false;
   {
     std::fprintf(stderr, "Try 'featurepoints --help'.\n");
   }
+#ifdef FEATUREPOINTS_HAVE_MPI
+  if (Processes)
+  {
+    // The other processes wait for this one: end them all, with this exit code.
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, code);
+  }
+#endif
   std::exit(code);
+}
+
+// The number of processes mpiexec started (Open MPI, MPICH/Hydra, PMIx), or 1.
+int LaunchedProcesses()
+{
+  for (const char* name : { "OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS" })
+  {
+    if (const char* value = std::getenv(name))
+    {
+      return std::max(1, std::atoi(value));
+    }
+  }
+  return 1;
 }
 
 // VTK's warnings as one line each (errors are reported by the program itself).
@@ -1316,6 +1350,15 @@ public:
 
   int Execute()
   {
+    if (Rank != 0)
+    {
+      // Another process of a distributed run: its share of the work, nothing on the terminal or
+      // in the files (process 0 reads, writes and reports).
+      this->SetThreads();
+      this->Cloud = vtkSmartPointer<vtkPolyData>::New();
+      this->Extract();
+      return ExitSuccess;
+    }
     this->CheckFiles();
     InstallSignalHandlers();
     this->SetThreads();
@@ -1484,14 +1527,42 @@ private:
     this->Filter->AddObserver(vtkCommand::ErrorEvent, filterError);
     this->Meter->Stage("extracting");
     const auto start = Clock::now();
-    this->Filter->Update();
-    this->Meter->Finish();
-    this->Times.emplace_back("extract", Seconds(start));
-    if (!filterError->Message.empty())
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (Processes)
     {
-      Fail(ExitFailure, s.Input + ": " + filterError->Message);
+      // Process 0 holds the cloud: the driver splits it, each process scores its piece, and the
+      // result comes back to process 0 in the input's order.
+      this->Driver = vtkSmartPointer<vtkDistributedFeaturePoints>::New();
+      this->Driver->SetController(Processes);
+      this->Driver->SetDetector(this->Filter);
+      this->Driver->SetInputData(this->Filter->GetInputDataObject(0, 0));
+      this->Driver->GatherOutputOn();
+      this->Driver->AddObserver(vtkCommand::ErrorEvent, filterError);
+      this->Driver->Update();
+      this->Meter->Finish();
+      if (Rank != 0)
+      {
+        return;
+      }
+      this->Times.emplace_back("extract", Seconds(start));
+      if (!filterError->Message.empty())
+      {
+        Fail(ExitFailure, s.Input + ": " + filterError->Message);
+      }
+      this->Result = this->Driver->GetOutput();
     }
-    this->Result = this->Filter->GetOutput();
+    else
+#endif
+    {
+      this->Filter->Update();
+      this->Meter->Finish();
+      this->Times.emplace_back("extract", Seconds(start));
+      if (!filterError->Message.empty())
+      {
+        Fail(ExitFailure, s.Input + ": " + filterError->Message);
+      }
+      this->Result = this->Filter->GetOutput();
+    }
     if (exponent != 0)
     {
       UnscaleResult(this->Result, this->Cloud, *this->M, exponent, s.Input);
@@ -1685,6 +1756,22 @@ private:
       stages += line;
     }
     std::printf("extract (s) %s\n", stages.c_str());
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (this->Driver)
+    {
+      std::printf("ranks       %d%s\n", this->Driver->GetNumberOfRanks(),
+        this->Driver->GetDistributed()
+          ? ""
+          : " (this method with these options ran on rank 0 alone: its cloud-wide figures are not "
+            "distributed yet)");
+      for (int r = 0; r < this->Driver->GetNumberOfRanks(); ++r)
+      {
+        std::printf("rank %-6d %lld own points, %lld halo points\n", r,
+          static_cast<long long>(this->Driver->GetNumberOfOwnedPoints(r)),
+          static_cast<long long>(this->Driver->GetNumberOfHaloPoints(r)));
+      }
+    }
+#endif
   }
 
   const Settings& S;
@@ -1694,6 +1781,9 @@ private:
   vtkNew<vtkPointCloudReader> Reader;
   vtkSmartPointer<vtkPointSet> Cloud;
   vtkSmartPointer<vtkFeaturePointDetector> Filter;
+#ifdef FEATUREPOINTS_HAVE_MPI
+  vtkSmartPointer<vtkDistributedFeaturePoints> Driver;
+#endif
   vtkPolyData* Result = nullptr;
   double Grown = std::nan(""); // see Method::GrowThreshold
   vtkNew<vtkFeatureCurveExtraction> Curves;
@@ -1708,11 +1798,36 @@ int main(int argc, char* argv[])
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   vtkNew<OneLineOutputWindow> messages;
   vtkOutputWindow::SetInstance(messages);
+#ifdef FEATUREPOINTS_HAVE_MPI
+  // MPI only when mpiexec started several processes: a plain run neither needs nor starts it.
+  vtkNew<vtkMPIController> processes;
+  if (LaunchedProcesses() > 1)
+  {
+    processes->Initialize(&argc, &argv);
+    if (processes->GetNumberOfProcesses() > 1)
+    {
+      Processes = processes;
+      Rank = processes->GetLocalProcessId();
+      vtkMultiProcessController::SetGlobalController(processes);
+    }
+  }
+#endif
   const Settings s = ParseArguments(argc, argv);
+  if (Rank != 0)
+  {
+    Quiet = true; // process 0 reports for all
+  }
   try
   {
     FeaturePointsRun run(s);
-    return run.Execute();
+    const int code = run.Execute();
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (Processes)
+    {
+      Processes->Finalize();
+    }
+#endif
+    return code;
   }
   catch (const std::bad_alloc&)
   {
