@@ -419,9 +419,18 @@ bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods*
     return false;
   }
   this->MeanSpacing = d;
-  // In a distributed run the count is the piece's and its halo's: process 0 alone says it.
-  if (neighborhoods->GetNumberOfDuplicatePoints() > 0 &&
-    (!this->IsDistributed() || this->Controller->GetLocalProcessId() == 0))
+  if (this->IsDistributed())
+  {
+    // A piece's count includes its halo's points: process 0 says only whether any coincide.
+    const vtkIdType pieces =
+      this->GlobalSum(static_cast<vtkIdType>(neighborhoods->GetNumberOfDuplicatePoints() > 0));
+    if (pieces > 0 && this->Controller->GetLocalProcessId() == 0)
+    {
+      vtkWarningMacro("Points coincide with other points; their neighbourhoods hold their "
+                      "copies, which raises their density.");
+    }
+  }
+  else if (neighborhoods->GetNumberOfDuplicatePoints() > 0)
   {
     vtkWarningMacro(<< neighborhoods->GetNumberOfDuplicatePoints()
                     << " point(s) coincide with another point; their neighbourhoods hold their "

@@ -468,6 +468,7 @@ int vtkDistributedFeaturePoints::RequestData(
   this->OwnedCounts.assign(1, input->GetNumberOfPoints());
   this->HaloCounts.assign(1, 0);
   this->Distributed = false;
+  this->ReplacedArrays.clear();
   const bool featuresOnly = detector->GetOutputFeaturesOnly();
   if (nProcs <= 1 || comm == MPI_COMM_NULL)
   {
@@ -640,8 +641,10 @@ int vtkDistributedFeaturePoints::RequestData(
         saved->Register(this);
       }
       detector->SetController(nullptr);
-      detector->SetInputData(all.ToPolyData());
+      vtkSmartPointer<vtkPolyData> cloud = all.ToPolyData();
+      detector->SetInputData(cloud);
       detector->Update();
+      this->FindReplacedArrays(cloud, detector->GetOutput());
       detector->SetController(saved);
       if (saved)
       {
@@ -846,6 +849,7 @@ int vtkDistributedFeaturePoints::RequestData(
     saved->UnRegister(this);
   }
   vtkPolyData* result = detector->GetOutput();
+  this->FindReplacedArrays(pieceData, result);
 
   // 7. The own points' results.
   vtkNew<vtkPolyData> resultNoGhosts;
@@ -903,6 +907,24 @@ int vtkDistributedFeaturePoints::RequestData(
     output->ShallowCopy(full);
   }
   return 1;
+}
+
+void vtkDistributedFeaturePoints::FindReplacedArrays(vtkPolyData* input, vtkPolyData* result)
+{
+  for (int a = 0; a < input->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = input->GetPointData()->GetAbstractArray(a);
+    const char* name = array ? array->GetName() : nullptr;
+    if (!name || std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0)
+    {
+      continue;
+    }
+    vtkAbstractArray* written = result->GetPointData()->GetAbstractArray(name);
+    if (written && written != array)
+    {
+      this->ReplacedArrays.emplace_back(name);
+    }
+  }
 }
 
 void vtkDistributedFeaturePoints::PrintSelf(ostream& os, vtkIndent indent)

@@ -46,6 +46,7 @@
 #include "FeaturePointsParallelModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <string> // For the replaced arrays
 #include <vector> // For the counts of each process
 
 class vtkFeaturePointDetector;
@@ -90,6 +91,15 @@ public:
   vtkIdType GetNumberOfHaloPoints(int rank) const { return this->HaloCounts.at(rank); }
   ///@}
 
+  ///@{
+  /**
+   * The input's point arrays that the detector replaced by its own of the same name in the last
+   * run (the output holds the detector's).
+   */
+  int GetNumberOfReplacedArrays() const { return static_cast<int>(this->ReplacedArrays.size()); }
+  const char* GetReplacedArray(int i) const { return this->ReplacedArrays.at(i).c_str(); }
+  ///@}
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -105,6 +115,9 @@ protected:
   bool Distributed = false;
   std::vector<vtkIdType> OwnedCounts;
   std::vector<vtkIdType> HaloCounts;
+  std::vector<std::string> ReplacedArrays;
+
+  void FindReplacedArrays(vtkPolyData* input, vtkPolyData* result);
 
 private:
   vtkDistributedFeaturePoints(const vtkDistributedFeaturePoints&) = delete;

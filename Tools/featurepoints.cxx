@@ -1355,7 +1355,9 @@ public:
       // Another process of a distributed run: its share of the work, nothing on the terminal or
       // in the files (process 0 reads, writes and reports).
       this->SetThreads();
-      this->Cloud = vtkSmartPointer<vtkPolyData>::New();
+      auto empty = vtkSmartPointer<vtkPolyData>::New();
+      empty->SetPoints(vtkNew<vtkPoints>());
+      this->Cloud = empty;
       this->Extract();
       return ExitSuccess;
     }
@@ -1572,7 +1574,22 @@ private:
     {
       Fail(ExitFailure, s.Input + ": " + nonFinite);
     }
-    WarnReplacedArrays(this->Cloud, this->Result);
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (this->Driver)
+    {
+      // The result's arrays are copies: the driver knows which input arrays the method replaced.
+      for (int a = 0; a < this->Driver->GetNumberOfReplacedArrays() && !Quiet; ++a)
+      {
+        std::fprintf(stderr,
+          "featurepoints: note: the input's point array '%s' is replaced by the method's own\n",
+          this->Driver->GetReplacedArray(a));
+      }
+    }
+    else
+#endif
+    {
+      WarnReplacedArrays(this->Cloud, this->Result);
+    }
     this->Grown = this->M->GrowThreshold ? this->M->GrowThreshold(this->Filter) : std::nan("");
   }
 

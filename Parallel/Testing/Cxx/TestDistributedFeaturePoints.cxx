@@ -2,6 +2,8 @@
 // scores, the normals) must equal, bit for bit, the detector's on the whole cloud in one process,
 // for clouds given to the processes as contiguous pieces in input order. Run as
 // `mpiexec -n N TestDistributedFeaturePoints N`.
+// `TestDistributedFeaturePoints --write FILE N` (one process) writes the cloud with duplicates
+// built from an N-point bracket, for the command-line tool's test.
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkDataArray.h"
 #include "vtkDistributedFeaturePoints.h"
@@ -13,6 +15,7 @@
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
+#include "vtkPointCloudIO.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -168,6 +171,17 @@ bool Same(vtkPolyData* a, vtkPolyData* b, const std::string& label)
 
 int main(int argc, char* argv[])
 {
+  if (argc == 4 && std::string(argv[1]) == "--write")
+  {
+    std::string error;
+    auto cloud = WithDuplicates(Bracket(std::atoll(argv[3])));
+    if (!vtkPointCloudIO::Write(cloud, argv[2], error))
+    {
+      std::printf("%s\n", error.c_str());
+      return EXIT_FAILURE;
+    }
+    return EXIT_SUCCESS;
+  }
   vtkNew<vtkMPIController> controller;
   controller->Initialize(&argc, &argv);
   vtkMultiProcessController::SetGlobalController(controller);
