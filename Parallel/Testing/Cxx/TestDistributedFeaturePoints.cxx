@@ -3,7 +3,8 @@
 // for clouds given to the processes as contiguous pieces in input order. Run as
 // `mpiexec -n N TestDistributedFeaturePoints N`.
 // `TestDistributedFeaturePoints --write FILE N` (one process) writes the cloud with duplicates
-// built from an N-point bracket, for the command-line tool's test.
+// built from an N-point bracket, for the command-line tool's test; `--write-plain FILE N` the
+// bracket itself (benchmarks).
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkDataArray.h"
 #include "vtkDistributedFeaturePoints.h"
@@ -171,10 +172,14 @@ bool Same(vtkPolyData* a, vtkPolyData* b, const std::string& label)
 
 int main(int argc, char* argv[])
 {
-  if (argc == 4 && std::string(argv[1]) == "--write")
+  if (argc == 4 && (std::string(argv[1]) == "--write" || std::string(argv[1]) == "--write-plain"))
   {
     std::string error;
-    auto cloud = WithDuplicates(Bracket(std::atoll(argv[3])));
+    vtkSmartPointer<vtkPolyData> cloud = Bracket(std::atoll(argv[3]));
+    if (std::string(argv[1]) == "--write")
+    {
+      cloud = WithDuplicates(cloud);
+    }
     if (!vtkPointCloudIO::Write(cloud, argv[2], error))
     {
       std::printf("%s\n", error.c_str());
