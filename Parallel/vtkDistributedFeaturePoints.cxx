@@ -29,6 +29,7 @@
 #include <cstring>
 #include <numeric>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 vtkStandardNewMacro(vtkDistributedFeaturePoints);
@@ -414,6 +415,194 @@ int Owner(const std::vector<SplitNode>& nodes, const double x[3])
   return nodes[node].Rank;
 }
 
+// The box of process `rank` in the split: lo <= x < hi on each axis (infinite outside).
+void LeafRegion(const std::vector<SplitNode>& nodes, int rank, double region[6])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    region[2 * c] = -VTK_DOUBLE_MAX;
+    region[2 * c + 1] = VTK_DOUBLE_MAX;
+  }
+  // Processes [first, first + count) lie under a node; its left child has count / 2 of them.
+  int node = 0, first = 0, count = 0;
+  for (const SplitNode& n : nodes)
+  {
+    count += n.Rank >= 0 ? 1 : 0;
+  }
+  while (nodes[node].Rank < 0)
+  {
+    const int left = count / 2;
+    const SplitNode& n = nodes[node];
+    if (rank < first + left)
+    {
+      region[2 * n.Axis + 1] = std::min(region[2 * n.Axis + 1], n.Value);
+      node = n.Left;
+      count = left;
+    }
+    else
+    {
+      region[2 * n.Axis] = std::max(region[2 * n.Axis], n.Value);
+      node = n.Right;
+      first += left;
+      count -= left;
+    }
+  }
+}
+
+// 1 for the valid points whose reach (factor times the distance to their k-th nearest point, or
+// to their nearest point at a nonzero distance if further) may leave `region`. The bound: on a
+// sparse grid of cells of side c (a sample's median k-th nearest distance: a block of 27 cells
+// mostly suffices, so the bound costs little), a point's
+// k nearest lie within the block of (2m + 1)^3 cells around its cell once the block holds k + 1
+// points at two places at least, so within sqrt(3) (m + 1) c of it.
+std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighborhoods,
+  vtkPoints* points, const std::vector<vtkIdType>& valid, int k, double factor,
+  const double region[6])
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  std::vector<unsigned char> near(n, 0);
+  for (vtkIdType i : valid)
+  {
+    near[i] = 1;
+  }
+  if (static_cast<vtkIdType>(valid.size()) < 64 * static_cast<vtkIdType>(k + 1))
+  {
+    return near; // small piece: every point gets the exact reach
+  }
+  // The cell side from a sample's k-th nearest distances.
+  std::vector<vtkIdType> sample;
+  const size_t stride = std::max<size_t>(1, valid.size() / 1000);
+  for (size_t r = 0; r < valid.size(); r += stride)
+  {
+    sample.push_back(valid[r]);
+  }
+  std::vector<int32_t> table;
+  neighborhoods->FindNearestNeighbors(k, sample, table);
+  std::vector<double> radii;
+  double x[3], y[3];
+  for (size_t r = 0; r < sample.size(); ++r)
+  {
+    const int32_t last = table[r * k + k - 1];
+    if (last >= 0)
+    {
+      points->GetPoint(sample[r], x);
+      points->GetPoint(last, y);
+      radii.push_back(std::sqrt(vtkMath::Distance2BetweenPoints(x, y)));
+    }
+  }
+  if (radii.empty())
+  {
+    return near;
+  }
+  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+  const double side = radii[radii.size() / 2];
+  const double* b = neighborhoods->GetBounds();
+  constexpr int64_t Range = int64_t(1) << 20;
+  for (int c = 0; c < 3; ++c)
+  {
+    if (!(side > 0.0) || (b[2 * c + 1] - b[2 * c]) / side >= static_cast<double>(Range - 1))
+    {
+      return near;
+    }
+  }
+  struct Cell
+  {
+    vtkIdType Count = 0;
+    bool Interior = false; // every point's reach stays inside the region
+    double Box[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+      VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  };
+  auto keyOf = [&](const int64_t ijk[3]) { return (ijk[0] * Range + ijk[1]) * Range + ijk[2]; };
+  std::unordered_map<int64_t, Cell> cells;
+  std::vector<int64_t> keys(n, -1);
+  for (vtkIdType i : valid)
+  {
+    points->GetPoint(i, x);
+    int64_t ijk[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      ijk[c] = static_cast<int64_t>(std::floor((x[c] - b[2 * c]) / side));
+    }
+    keys[i] = keyOf(ijk);
+    Cell& cell = cells[keys[i]];
+    ++cell.Count;
+    for (int c = 0; c < 3; ++c)
+    {
+      cell.Box[2 * c] = std::min(cell.Box[2 * c], x[c]);
+      cell.Box[2 * c + 1] = std::max(cell.Box[2 * c + 1], x[c]);
+    }
+  }
+  constexpr int MaximumRings = 4;
+  for (auto& entry : cells)
+  {
+    const int64_t key = entry.first;
+    const int64_t ijk[3] = { key / (Range * Range), (key / Range) % Range, key % Range };
+    vtkIdType count = 0;
+    double box[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+      VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    int rings = -1;
+    for (int m = 0; m <= MaximumRings; ++m)
+    {
+      // The shell of the block at Chebyshev distance m.
+      for (int64_t di = -m; di <= m; ++di)
+      {
+        for (int64_t dj = -m; dj <= m; ++dj)
+        {
+          for (int64_t dk = -m; dk <= m; ++dk)
+          {
+            if (std::max({ std::abs(di), std::abs(dj), std::abs(dk) }) != m)
+            {
+              continue;
+            }
+            const int64_t other[3] = { ijk[0] + di, ijk[1] + dj, ijk[2] + dk };
+            if (other[0] < 0 || other[1] < 0 || other[2] < 0)
+            {
+              continue;
+            }
+            auto found = cells.find(keyOf(other));
+            if (found == cells.end())
+            {
+              continue;
+            }
+            count += found->second.Count;
+            for (int c = 0; c < 3; ++c)
+            {
+              box[2 * c] = std::min(box[2 * c], found->second.Box[2 * c]);
+              box[2 * c + 1] = std::max(box[2 * c + 1], found->second.Box[2 * c + 1]);
+            }
+          }
+        }
+      }
+      const bool twoPlaces = box[1] > box[0] || box[3] > box[2] || box[5] > box[4];
+      if (count >= k + 1 && twoPlaces)
+      {
+        rings = m;
+        break;
+      }
+    }
+    if (rings < 0)
+    {
+      continue; // the exact reach decides
+    }
+    const double bound = factor * std::sqrt(3.0) * (rings + 1) * side * (1.0 + 1e-9);
+    const double* own = entry.second.Box;
+    bool inside = true;
+    for (int c = 0; c < 3 && inside; ++c)
+    {
+      inside = own[2 * c] - bound > region[2 * c] && own[2 * c + 1] + bound < region[2 * c + 1];
+    }
+    entry.second.Interior = inside;
+  }
+  for (vtkIdType i : valid)
+  {
+    if (cells[keys[i]].Interior)
+    {
+      near[i] = 0;
+    }
+  }
+  return near;
+}
+
 bool Finite(const double x[3])
 {
   return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
@@ -662,12 +851,24 @@ int vtkDistributedFeaturePoints::RequestData(
   {
     vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
     neighborhoods->Build(own.Points);
-    std::vector<vtkIdType> ids = neighborhoods->GetValidIds();
+    const std::vector<vtkIdType> valid = neighborhoods->GetValidIds();
+    const double factor = std::ldexp(1.0, levels) - 1.0;
+    double region[6];
+    LeafRegion(nodes, rank, region);
+    // Only the points whose reach may leave this process's region add to the halo: a cheap upper
+    // bound of the reach rules out the others, and the rest get the exact one.
+    const std::vector<unsigned char> nearBorder =
+      NearRegionBorder(neighborhoods, own.Points, valid, k, factor, region);
+    std::vector<vtkIdType> ids;
+    for (vtkIdType i : valid)
+    {
+      if (nearBorder[i])
+      {
+        ids.push_back(i);
+      }
+    }
     std::vector<int32_t> table;
     neighborhoods->FindNearestNeighbors(k, ids, table);
-    neighborhoods->ComputeMeanSpacing(ids, table, k);
-    const std::vector<double>& nearest = neighborhoods->GetNearestDistances();
-    const double factor = std::ldexp(1.0, levels) - 1.0;
     const double* b = neighborhoods->GetBounds();
     double cell[3];
     for (int c = 0; c < 3; ++c)
@@ -685,20 +886,38 @@ int vtkDistributedFeaturePoints::RequestData(
     {
       const vtkIdType i = ids[r];
       own.Points->GetPoint(i, x);
-      double reach = VTK_DOUBLE_MAX;
+      // The distance to the k-th nearest own point, or, where the k nearest all coincide with
+      // the point, to the nearest own point at a nonzero distance (the mean spacing needs it).
+      // Unbounded when there is none.
+      double radius = VTK_DOUBLE_MAX;
       const int32_t last = table[r * k + k - 1];
       if (last >= 0)
       {
         own.Points->GetPoint(last, y);
-        const double rk = std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
-        const double rd = nearest.empty() ? 0.0 : nearest[i];
-        // rd: the nearest point at a nonzero distance (0: every own point coincides, so the
-        // nearest distinct point is elsewhere, anywhere).
-        if (rd > 0.0)
+        radius = std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
+      }
+      for (vtkIdType kk = 4 * static_cast<vtkIdType>(k); radius == 0.0; kk *= 4)
+      {
+        const vtkIdType n = static_cast<vtkIdType>(valid.size()) - 1;
+        std::vector<int32_t> row;
+        neighborhoods->FindNearestNeighbors(static_cast<int>(std::min(kk, n)), { i }, row);
+        radius = VTK_DOUBLE_MAX;
+        for (int32_t j : row)
         {
-          reach = factor * std::max(rk, rd) * (1.0 + 1e-12);
+          own.Points->GetPoint(j, y);
+          const double d = j >= 0 ? std::sqrt(vtkMath::Distance2BetweenPoints(x, y)) : 0.0;
+          if (d > 0.0)
+          {
+            radius = d;
+            break;
+          }
+        }
+        if (radius == VTK_DOUBLE_MAX && kk < n)
+        {
+          radius = 0.0; // look further
         }
       }
+      const double reach = radius == VTK_DOUBLE_MAX ? radius : factor * radius * (1.0 + 1e-12);
       int index = 0;
       for (int c = 2; c >= 0; --c)
       {
