@@ -1440,11 +1440,18 @@ private:
   // More threads than cores only slows the run down (and TBB says so on the console).
   void SetThreads() const
   {
+    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     if (this->S.Threads <= 0)
     {
+      // Several processes on one machine share its cores (mpiexec says how many run here).
+      const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+      const int here = local ? std::max(1, std::atoi(local)) : 1;
+      if (here > 1)
+      {
+        vtkSMPTools::Initialize(std::max(1, cores / here));
+      }
       return;
     }
-    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     if (this->S.Threads > cores && !Quiet)
     {
       std::fprintf(stderr,
