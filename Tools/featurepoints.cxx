@@ -1786,8 +1786,8 @@ private:
       std::printf("ranks       %d%s\n", this->Driver->GetNumberOfRanks(),
         this->Driver->GetDistributed()
           ? ""
-          : " (this method with these options ran on rank 0 alone: its cloud-wide figures are not "
-            "distributed yet)");
+          : " (run on rank 0 alone: this method with these options is not distributed yet, or the "
+            "cloud is too small to split)");
       for (int r = 0; r < this->Driver->GetNumberOfRanks(); ++r)
       {
         std::printf("rank %-6d %lld own points, %lld halo points\n", r,
