@@ -54,10 +54,12 @@ struct Layout
 
   size_t RowBytes() const
   {
-    size_t bytes = sizeof(long long) + 3 * static_cast<size_t>(vtkDataArray::GetDataTypeSize(this->PointType));
+    size_t bytes = sizeof(long long) +
+      3 * static_cast<size_t>(vtkDataArray::GetDataTypeSize(this->PointType));
     for (size_t a = 0; a < this->Names.size(); ++a)
     {
-      bytes += static_cast<size_t>(vtkDataArray::GetDataTypeSize(this->Types[a])) * this->Components[a];
+      bytes += static_cast<size_t>(vtkDataArray::GetDataTypeSize(this->Types[a])) *
+        this->Components[a];
     }
     return bytes;
   }
@@ -193,8 +195,10 @@ Layout LayoutOf(vtkPointSet* data)
   return layout;
 }
 
-// The rows of a point set, or "" and an empty string when it lacks an array of the layout.
-bool RowsOf(vtkPointSet* data, const Layout& layout, long long firstGid, Rows& rows, std::string& error)
+// The rows of a point set, their global ids from `firstGid` on; false (and `error`) when it lacks
+// an array of the layout.
+bool RowsOf(
+  vtkPointSet* data, const Layout& layout, long long firstGid, Rows& rows, std::string& error)
 {
   const vtkIdType n = data->GetNumberOfPoints();
   rows.Allocate(layout, n);
@@ -399,7 +403,8 @@ int BuildSplit(std::vector<SplitNode>& nodes, const std::vector<double>& sample,
   std::copy(above.begin(), above.end(), ids.begin() + lo + below.size());
   const size_t split = lo + below.size();
   const int left = BuildSplit(nodes, sample, ids, lo, split, firstRank, leftRanks);
-  const int right = BuildSplit(nodes, sample, ids, split, hi, firstRank + leftRanks, ranks - leftRanks);
+  const int right =
+    BuildSplit(nodes, sample, ids, split, hi, firstRank + leftRanks, ranks - leftRanks);
   nodes[node].Left = left;
   nodes[node].Right = right;
   return node;

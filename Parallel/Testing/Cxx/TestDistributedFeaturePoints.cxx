@@ -5,12 +5,12 @@
 // `TestDistributedFeaturePoints --write FILE N` (one process) writes the cloud with duplicates
 // built from an N-point bracket, for the command-line tool's test; `--write-plain FILE N` the
 // bracket itself (benchmarks).
+#include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkDataArray.h"
 #include "vtkDistributedFeaturePoints.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFeaturePointExtraction.h"
-#include "vtkCreaseVotingFeatures.h"
 #include "vtkFieldData.h"
 #include "vtkMPIController.h"
 #include "vtkMath.h"
@@ -117,7 +117,8 @@ bool Same(vtkPolyData* a, vtkPolyData* b, const std::string& label)
   if (a->GetNumberOfPoints() != b->GetNumberOfPoints())
   {
     std::printf("%s: %lld points, one process %lld\n", label.c_str(),
-      static_cast<long long>(b->GetNumberOfPoints()), static_cast<long long>(a->GetNumberOfPoints()));
+      static_cast<long long>(b->GetNumberOfPoints()),
+      static_cast<long long>(a->GetNumberOfPoints()));
     return false;
   }
   bool same = true;
@@ -208,6 +209,11 @@ int main(int argc, char* argv[])
     std::function<vtkSmartPointer<vtkFeaturePointDetector>()> Make;
     bool Distributed; // the cloud is split (false: run on process 0 alone)
   };
+  auto make = [](vtkFeaturePointDetector* detector) {
+    vtkSmartPointer<vtkFeaturePointDetector> owned;
+    owned.TakeReference(detector);
+    return owned;
+  };
   auto huang = [](bool voxels) {
     auto f = vtkSmartPointer<vtkFeaturePointExtraction>::New();
     f->SetUseVoxelFilter(voxels);
@@ -217,14 +223,14 @@ int main(int argc, char* argv[])
     { "huang2023 (voxel filter off), bracket", bracket, [&] { return huang(false); }, true },
     { "huang2023 (voxel filter off), duplicates", duplicates, [&] { return huang(false); }, true },
     { "variation, bracket", bracket,
-      [] { return vtkSmartPointer<vtkFeaturePointDetector>(vtkSmartPointer<vtkSurfaceVariationFeatures>::New()); },
+      [&] { return make(vtkSurfaceVariationFeatures::New()); },
       true },
     { "curvature, duplicates", duplicates,
-      [] { return vtkSmartPointer<vtkFeaturePointDetector>(vtkSmartPointer<vtkCurvatureDensityFeatures>::New()); },
+      [&] { return make(vtkCurvatureDensityFeatures::New()); },
       true },
     { "huang2023 (defaults), duplicates", duplicates, [&] { return huang(true); }, false },
     { "crease (defaults), bracket", bracket,
-      [] { return vtkSmartPointer<vtkFeaturePointDetector>(vtkSmartPointer<vtkCreaseVotingFeatures>::New()); },
+      [&] { return make(vtkCreaseVotingFeatures::New()); },
       false },
   };
   for (const Case& c : cases)
