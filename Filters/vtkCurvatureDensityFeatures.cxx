@@ -20,17 +20,23 @@ vtkStandardNewMacro(vtkCurvatureDensityFeatures);
 
 namespace
 {
-double MedianOf(const float* values, const std::vector<vtkIdType>& ids)
+} // namespace
+
+double vtkCurvatureDensityFeatures::MedianOf(const float* values, const std::vector<vtkIdType>& ids)
 {
-  std::vector<float> v;
+  // Over the own points of every process in a distributed run (the float values, widened to
+  // double, keep their order and so their upper median).
+  std::vector<double> v;
   v.reserve(ids.size());
   for (vtkIdType id : ids)
   {
-    v.push_back(values[id]);
+    if (this->IsOwned(id))
+    {
+      v.push_back(values[id]);
+    }
   }
-  return featurepoints::UpperMedian(v);
+  return this->GlobalUpperMedian(v);
 }
-} // namespace
 
 vtkCurvatureDensityFeatures::vtkCurvatureDensityFeatures()
 {
@@ -72,7 +78,7 @@ int vtkCurvatureDensityFeatures::RequestData(
   }
   // Pass 1: normal, curvature and density of each point.
   featurepoints::LocalShapeWorker worker{ neighborhoods->GetPoints(), ids, table.data(), k,
-    neighborhoods->GetCenter(), normals->GetPointer(0), curvature->GetPointer(0),
+    this->CloudCenter(neighborhoods), normals->GetPointer(0), curvature->GetPointer(0),
     density->GetPointer(0), {} };
   vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), worker);
   this->UpdateProgress(0.8);
@@ -99,9 +105,9 @@ int vtkCurvatureDensityFeatures::RequestData(
   });
 
   // The score: each indicator over its median (a zero median leaves its term out).
-  const double medC = MedianOf(curvature->GetPointer(0), ids);
-  const double medT = MedianOf(theta, ids);
-  const double medD = MedianOf(density->GetPointer(0), ids);
+  const double medC = this->MedianOf(curvature->GetPointer(0), ids);
+  const double medT = this->MedianOf(theta, ids);
+  const double medD = this->MedianOf(density->GetPointer(0), ids);
   const double wc = medC > 0.0 ? this->CurvatureWeight / medC : 0.0;
   const double wt = medT > 0.0 ? this->NormalAngleWeight / medT : 0.0;
   const double wd = medD > 0.0 ? this->DensityWeight / medD : 0.0;

@@ -60,7 +60,20 @@ public:
   /** The score array: "CurvatureDensity". */
   const char* GetScoreArrayName() const override { return "CurvatureDensity"; }
 
+  /**
+   * Distributed runs: each own point's NumberOfNeighbors nearest and their normals, so their
+   * neighbourhoods too (see the superclass).
+   */
+  bool GetHaloExtent(int& neighbors, int& levels) const override
+  {
+    neighbors = this->NumberOfNeighbors;
+    levels = 2;
+    return true;
+  }
+
 protected:
+  // The upper median of `values` over `ids` (the own points of every process).
+  double MedianOf(const float* values, const std::vector<vtkIdType>& ids);
   vtkCurvatureDensityFeatures();
   ~vtkCurvatureDensityFeatures() override;
 

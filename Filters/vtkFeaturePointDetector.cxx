@@ -8,9 +8,11 @@
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointCloudGridLocator.h"
 #include "vtkPointCloudNeighborhoods.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -26,6 +28,7 @@
 #include <vector>
 
 vtkCxxSetObjectMacro(vtkFeaturePointDetector, Locator, vtkAbstractPointLocator);
+vtkCxxSetObjectMacro(vtkFeaturePointDetector, Controller, vtkMultiProcessController);
 
 vtkFeaturePointDetector::vtkFeaturePointDetector()
 {
@@ -35,6 +38,137 @@ vtkFeaturePointDetector::vtkFeaturePointDetector()
 vtkFeaturePointDetector::~vtkFeaturePointDetector()
 {
   this->SetLocator(nullptr);
+  this->SetController(nullptr);
+}
+
+bool vtkFeaturePointDetector::IsDistributed() const
+{
+  return this->Controller && this->Controller->GetNumberOfProcesses() > 1;
+}
+
+double vtkFeaturePointDetector::GlobalSum(double value) const
+{
+  if (!this->IsDistributed())
+  {
+    return value;
+  }
+  double total = 0.0;
+  this->Controller->AllReduce(&value, &total, 1, vtkCommunicator::SUM_OP);
+  return total;
+}
+
+vtkIdType vtkFeaturePointDetector::GlobalSum(vtkIdType value) const
+{
+  if (!this->IsDistributed())
+  {
+    return value;
+  }
+  long long local = value, total = 0;
+  this->Controller->AllReduce(&local, &total, 1, vtkCommunicator::SUM_OP);
+  return static_cast<vtkIdType>(total);
+}
+
+double vtkFeaturePointDetector::GlobalUpperMedian(std::vector<double>& values) const
+{
+  if (!this->IsDistributed())
+  {
+    return featurepoints::UpperMedian(values);
+  }
+  // The median of the union is a function of the values only (not of their order): gathered on
+  // the first process, which has them all.
+  const int nProcs = this->Controller->GetNumberOfProcesses();
+  const int rank = this->Controller->GetLocalProcessId();
+  long long count = static_cast<long long>(values.size());
+  std::vector<long long> counts(nProcs, 0);
+  this->Controller->Gather(&count, counts.data(), 1, 0);
+  std::vector<vtkIdType> lengths(nProcs), offsets(nProcs, 0);
+  vtkIdType total = 0;
+  for (int p = 0; p < nProcs; ++p)
+  {
+    lengths[p] = static_cast<vtkIdType>(counts[p]);
+    offsets[p] = total;
+    total += lengths[p];
+  }
+  std::vector<double> all(rank == 0 ? std::max<vtkIdType>(total, 1) : 1);
+  this->Controller->GatherV(values.data(), all.data(), static_cast<vtkIdType>(values.size()),
+    lengths.data(), offsets.data(), 0);
+  double median = 0.0;
+  if (rank == 0)
+  {
+    all.resize(total);
+    median = featurepoints::UpperMedian(all);
+  }
+  this->Controller->Broadcast(&median, 1, 0);
+  return median;
+}
+
+const double* vtkFeaturePointDetector::CloudBounds(vtkPointCloudNeighborhoods* neighborhoods) const
+{
+  return this->IsDistributed() ? this->GlobalBounds : neighborhoods->GetBounds();
+}
+
+const double* vtkFeaturePointDetector::CloudCenter(vtkPointCloudNeighborhoods* neighborhoods) const
+{
+  return this->IsDistributed() ? this->GlobalCenter : neighborhoods->GetCenter();
+}
+
+vtkIdType vtkFeaturePointDetector::CountOwned(const std::vector<vtkIdType>& ids) const
+{
+  if (this->Owned.empty())
+  {
+    return static_cast<vtkIdType>(ids.size());
+  }
+  vtkIdType count = 0;
+  for (vtkIdType id : ids)
+  {
+    count += this->Owned[id];
+  }
+  return count;
+}
+
+double vtkFeaturePointDetector::GlobalMeanSpacing(
+  vtkPointCloudNeighborhoods* neighborhoods, double local) const
+{
+  if (!this->IsDistributed())
+  {
+    return local;
+  }
+  // vtkPointCloudNeighborhoods::FinishMeanSpacing over the own points of every process: the
+  // nearest distinct distances below 10 times their upper median, summed exactly (so in any
+  // order and split).
+  const std::vector<double>& nearest = neighborhoods->GetNearestDistances();
+  const unsigned char* valid = neighborhoods->GetValidMask();
+  std::vector<double> positive;
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(nearest.size()); ++i)
+  {
+    if (valid[i] && this->IsOwned(i) && nearest[i] > 0.0)
+    {
+      positive.push_back(nearest[i]);
+    }
+  }
+  std::vector<double> copy(positive);
+  const double limit = 10.0 * this->GlobalUpperMedian(copy);
+  featurepoints::ExactSum sum;
+  long long count[1] = { 0 };
+  for (double v : positive)
+  {
+    if (v <= limit)
+    {
+      sum.Add(v);
+      ++count[0];
+    }
+  }
+  sum.Normalize();
+  long long limbs[featurepoints::ExactSum::NumberOfLimbs];
+  long long totalLimbs[featurepoints::ExactSum::NumberOfLimbs];
+  std::copy_n(sum.GetLimbs(), featurepoints::ExactSum::NumberOfLimbs, limbs);
+  this->Controller->AllReduce(
+    limbs, totalLimbs, featurepoints::ExactSum::NumberOfLimbs, vtkCommunicator::SUM_OP);
+  long long totalCount = 0;
+  this->Controller->AllReduce(count, &totalCount, 1, vtkCommunicator::SUM_OP);
+  featurepoints::ExactSum total;
+  std::copy_n(totalLimbs, featurepoints::ExactSum::NumberOfLimbs, total.GetLimbs());
+  return totalCount > 0 ? total.Value() / static_cast<double>(totalCount) : 0.0;
 }
 
 double vtkFeaturePointDetector::AutomaticThreshold(
@@ -227,7 +361,60 @@ bool vtkFeaturePointDetector::PrepareNeighborhoods(
   {
     this->OriginalIds.clear();
   }
+  this->PrepareOwnership(neighborhoods);
   return true;
+}
+
+void vtkFeaturePointDetector::PrepareOwnership(vtkPointCloudNeighborhoods* neighborhoods)
+{
+  this->Owned.clear();
+  if (!this->IsDistributed())
+  {
+    return;
+  }
+  // The halo's points carry vtkGhostType DUPLICATEPOINT: the piece's own points are the others.
+  const vtkIdType n = neighborhoods->GetNumberOfPoints();
+  vtkPointSet* input = vtkPointSet::SafeDownCast(this->GetInputDataObject(0, 0));
+  vtkUnsignedCharArray* ghosts = input ? vtkUnsignedCharArray::SafeDownCast(
+    input->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName())) : nullptr;
+  this->Owned.assign(n, 1);
+  if (ghosts && ghosts->GetNumberOfTuples() == n)
+  {
+    const bool renumbered = static_cast<vtkIdType>(this->OriginalIds.size()) == n;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const vtkIdType original = renumbered ? this->OriginalIds[i] : i;
+      this->Owned[i] =
+        (ghosts->GetValue(original) & vtkDataSetAttributes::DUPLICATEPOINT) ? 0 : 1;
+    }
+  }
+  // The bounds of the whole cloud: those of every process's own valid points.
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  const unsigned char* valid = neighborhoods->GetValidMask();
+  vtkPoints* points = neighborhoods->GetPoints();
+  double x[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (valid[i] && this->Owned[i])
+    {
+      points->GetPoint(i, x);
+      for (int c = 0; c < 3; ++c)
+      {
+        lo[c] = std::min(lo[c], x[c]);
+        hi[c] = std::max(hi[c], x[c]);
+      }
+    }
+  }
+  double globalLo[3], globalHi[3];
+  this->Controller->AllReduce(lo, globalLo, 3, vtkCommunicator::MIN_OP);
+  this->Controller->AllReduce(hi, globalHi, 3, vtkCommunicator::MAX_OP);
+  for (int c = 0; c < 3; ++c)
+  {
+    this->GlobalBounds[2 * c] = globalLo[c];
+    this->GlobalBounds[2 * c + 1] = globalHi[c];
+    this->GlobalCenter[c] = 0.5 * (globalLo[c] + globalHi[c]);
+  }
 }
 
 bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods* neighborhoods)
@@ -239,13 +426,27 @@ bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods*
     return false;
   }
   this->MeanSpacing = d;
-  if (neighborhoods->GetNumberOfDuplicatePoints() > 0)
+  if (this->IsDistributed())
+  {
+    // A piece's count includes its halo's points: process 0 says only whether any coincide.
+    const vtkIdType pieces =
+      this->GlobalSum(static_cast<vtkIdType>(neighborhoods->GetNumberOfDuplicatePoints() > 0));
+    if (pieces > 0 && this->Controller->GetLocalProcessId() == 0)
+    {
+      vtkWarningMacro("Points coincide with other points; their neighbourhoods hold their "
+                      "copies, which raises their density.");
+    }
+  }
+  else if (neighborhoods->GetNumberOfDuplicatePoints() > 0)
   {
     vtkWarningMacro(<< neighborhoods->GetNumberOfDuplicatePoints()
                     << " point(s) coincide with another point; their neighbourhoods hold their "
                        "copies, which raises their density.");
   }
-  this->WarnIfDegenerate(neighborhoods->GetPoints(), neighborhoods->GetValidMask());
+  if (!this->IsDistributed()) // a piece's shape is not the cloud's
+  {
+    this->WarnIfDegenerate(neighborhoods->GetPoints(), neighborhoods->GetValidMask());
+  }
   return true;
 }
 
@@ -263,12 +464,13 @@ bool vtkFeaturePointDetector::SearchAllPoints(vtkPoints* points, vtkIdType n, in
   {
     return false;
   }
-  const double d = neighborhoods->ComputeMeanSpacing(ids, table, k);
+  const double d =
+    this->GlobalMeanSpacing(neighborhoods, neighborhoods->ComputeMeanSpacing(ids, table, k));
   if (!this->CheckSpacing(d, neighborhoods))
   {
     return false;
   }
-  this->NumberOfCandidates = static_cast<vtkIdType>(ids.size());
+  this->NumberOfCandidates = this->GlobalSum(this->CountOwned(ids));
   this->BeginStage("scores");
   return !this->GetAbortExecute();
 }
@@ -280,13 +482,37 @@ void vtkFeaturePointDetector::ApplyThreshold(const float* score,
   this->BeginStage("threshold");
   if (this->ThresholdMode == AUTOMATIC)
   {
-    std::vector<double> scores(ids.size());
+    // The rule sees the own points' scores of every process: gathered on the first process (the
+    // rule's medians depend on the values only, not on their order).
+    std::vector<double> scores;
+    std::vector<int> kept;
+    scores.reserve(ids.size());
     for (size_t r = 0; r < ids.size(); ++r)
     {
-      scores[r] = score[ids[r]];
+      if (this->IsOwned(ids[r]))
+      {
+        scores.push_back(score[ids[r]]);
+        if (weights)
+        {
+          kept.push_back((*weights)[r]);
+        }
+      }
     }
-    this->ThresholdUsed = weights ? AutomaticThreshold(scores, *weights, this->ThresholdSigmas)
-                                  : AutomaticThreshold(scores, this->ThresholdSigmas);
+    if (this->IsDistributed())
+    {
+      this->GatherScores(scores, weights ? &kept : nullptr);
+    }
+    double threshold = 0.0;
+    if (!this->IsDistributed() || this->Controller->GetLocalProcessId() == 0)
+    {
+      threshold = weights ? AutomaticThreshold(scores, kept, this->ThresholdSigmas)
+                          : AutomaticThreshold(scores, this->ThresholdSigmas);
+    }
+    if (this->IsDistributed())
+    {
+      this->Controller->Broadcast(&threshold, 1, 0);
+    }
+    this->ThresholdUsed = threshold;
   }
   else
   {
@@ -296,9 +522,46 @@ void vtkFeaturePointDetector::ApplyThreshold(const float* score,
   for (vtkIdType id : ids)
   {
     mask[id] = (!eligible || eligible[id]) && score[id] > this->ThresholdUsed ? 1 : 0;
-    features += mask[id];
+    features += this->IsOwned(id) ? mask[id] : 0;
   }
-  this->NumberOfFeaturePoints = features;
+  this->NumberOfFeaturePoints = this->GlobalSum(features);
+}
+
+void vtkFeaturePointDetector::GatherScores(
+  std::vector<double>& scores, std::vector<int>* weights) const
+{
+  const int nProcs = this->Controller->GetNumberOfProcesses();
+  const int rank = this->Controller->GetLocalProcessId();
+  long long count = static_cast<long long>(scores.size());
+  std::vector<long long> counts(nProcs, 0);
+  this->Controller->Gather(&count, counts.data(), 1, 0);
+  std::vector<vtkIdType> lengths(nProcs), offsets(nProcs, 0);
+  vtkIdType total = 0;
+  for (int p = 0; p < nProcs; ++p)
+  {
+    lengths[p] = static_cast<vtkIdType>(counts[p]);
+    offsets[p] = total;
+    total += lengths[p];
+  }
+  std::vector<double> all(rank == 0 ? std::max<vtkIdType>(total, 1) : 1);
+  this->Controller->GatherV(scores.data(), all.data(), static_cast<vtkIdType>(scores.size()),
+    lengths.data(), offsets.data(), 0);
+  std::vector<int> allWeights(weights && rank == 0 ? std::max<vtkIdType>(total, 1) : 1);
+  if (weights)
+  {
+    this->Controller->GatherV(weights->data(), allWeights.data(),
+      static_cast<vtkIdType>(weights->size()), lengths.data(), offsets.data(), 0);
+  }
+  if (rank == 0)
+  {
+    all.resize(total);
+    scores.swap(all);
+    if (weights)
+    {
+      allWeights.resize(total);
+      weights->swap(allWeights);
+    }
+  }
 }
 
 int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* output,
@@ -530,4 +793,5 @@ void vtkFeaturePointDetector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ThresholdSigmas: " << this->ThresholdSigmas << "\n";
   os << indent << "OutputFeaturesOnly: " << this->OutputFeaturesOnly << "\n";
   os << indent << "Locator: " << (this->Locator ? this->Locator->GetClassName() : "(none)") << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
 }

@@ -22,6 +22,14 @@
  *   cell per point, the method's arrays and `FeatureMask` (uint8, 1 for a feature point); with
  *   OutputFeaturesOnly only the feature points, with the same arrays and `vtkOriginalPointIds`.
  *   The field data holds `MeanSpacing` and `FeatureThreshold`.
+ * - Distributed runs: with a Controller of more than one process, each process gives the filter
+ *   its piece of the cloud and a halo around it, the halo's points flagged in a `vtkGhostType`
+ *   point array (vtkDataSetAttributes::DUPLICATEPOINT). The piece's points are scored as in a
+ *   single process; every cloud-wide figure (bounds, mean spacing, medians, the threshold, the
+ *   counts) is taken over the pieces' own points of all processes, so that a method whose
+ *   GetHaloExtent() says so gives the own points exactly the results of one process on the whole
+ *   cloud. vtkDistributedFeaturePoints (FeaturePoints::Parallel) splits the cloud, builds the halo
+ *   and calls the filter that way. Without a Controller, or with one process, nothing changes.
  *
  * @sa vtkFeaturePointExtraction vtkSurfaceVariationFeatures vtkCurvatureDensityFeatures
  * vtkSmoothShrinkIndexFeatures vtkPointCloudNeighborhoods
@@ -39,6 +47,7 @@
 
 class vtkAbstractPointLocator;
 class vtkDataArray;
+class vtkMultiProcessController;
 class vtkPointCloudNeighborhoods;
 class vtkPoints;
 class vtkPointSet;
@@ -131,6 +140,29 @@ public:
   static void SelectFeaturePoints(
     vtkPolyData* full, vtkUnsignedCharArray* mask, vtkPolyData* output);
 
+  ///@{
+  /**
+   * The processes of a distributed run (see the class comment). Default nullptr: one process,
+   * whatever vtkMultiProcessController::GetGlobalController() holds.
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+  /**
+   * What a distributed run must give each process so that its own points get the results of a
+   * single process: the `neighbors` nearest points of every own point (and the nearest point at a
+   * nonzero distance), and so on over `levels` generations (2: the neighbours' own neighbourhoods
+   * too). Returns false (the default) when the method, with its present settings, takes figures
+   * that the processes cannot yet reduce: vtkDistributedFeaturePoints then runs it on one process.
+   */
+  virtual bool GetHaloExtent(int& neighbors, int& levels) const
+  {
+    neighbors = 0;
+    levels = 0;
+    return false;
+  }
+
   /** Name of the point array the threshold applies to ("F", "SurfaceVariation", ...). */
   virtual const char* GetScoreArrayName() const = 0;
 
@@ -202,6 +234,39 @@ protected:
   int AssembleOutput(vtkPointSet* input, vtkPolyData* output,
     const std::vector<vtkDataArray*>& arrays, vtkUnsignedCharArray* mask);
 
+  ///@{
+  /**
+   * Cloud-wide figures of a distributed run (see the class comment). IsDistributed(): a
+   * Controller of more than one process. IsOwned(i): point i (in the numbering the method works
+   * in) belongs to this process's piece, not to its halo; always true in one process. The
+   * Global*() helpers reduce over all processes (every process must call them, in the same
+   * order) and are the local figure in one process. GlobalUpperMedian() gathers the values to the
+   * first process. CloudBounds()/CloudCenter(): the bounds of the valid points of the whole cloud
+   * (neighborhoods->GetBounds()/GetCenter() in one process).
+   */
+  bool IsDistributed() const;
+  bool IsOwned(vtkIdType i) const { return this->Owned.empty() || this->Owned[i] != 0; }
+  double GlobalSum(double value) const;
+  vtkIdType GlobalSum(vtkIdType value) const;
+  double GlobalUpperMedian(std::vector<double>& values) const;
+  const double* CloudBounds(vtkPointCloudNeighborhoods* neighborhoods) const;
+  const double* CloudCenter(vtkPointCloudNeighborhoods* neighborhoods) const;
+  /** The number of own points among `ids`. */
+  vtkIdType CountOwned(const std::vector<vtkIdType>& ids) const;
+  /**
+   * The mean spacing as vtkPointCloudNeighborhoods::ComputeMeanSpacing() takes it, over the own
+   * points of every process, from the nearest distances `neighborhoods` has measured. Returns
+   * `local` in one process.
+   */
+  double GlobalMeanSpacing(vtkPointCloudNeighborhoods* neighborhoods, double local) const;
+  ///@}
+
+  // Distributed runs: the own points (from the input's vtkGhostType) and the cloud's bounds, after
+  // the renumbering of PrepareNeighborhoods.
+  void PrepareOwnership(vtkPointCloudNeighborhoods* neighborhoods);
+  // Distributed runs: the scores (and weights) of every process, on the first process.
+  void GatherScores(std::vector<double>& scores, std::vector<int>* weights) const;
+
   // Closes the running stage (if any) and starts timing the next one; nullptr only closes.
   void BeginStage(const char* name);
 
@@ -220,6 +285,12 @@ protected:
   vtkIdType NumberOfFeaturePoints = 0;
   // Input id of each point of the renumbered cloud (empty: not renumbered).
   std::vector<int32_t> OriginalIds;
+  vtkMultiProcessController* Controller = nullptr;
+  // Distributed runs: 1 for the piece's own points, 0 for the halo, in the numbering the method
+  // works in (empty: every point is own); the bounds of the whole cloud's valid points.
+  std::vector<unsigned char> Owned;
+  double GlobalBounds[6] = { 0, 0, 0, 0, 0, 0 };
+  double GlobalCenter[3] = { 0, 0, 0 };
   std::vector<std::string> StageNames;
   std::vector<double> StageTimes;
   std::chrono::steady_clock::time_point StageStart;

@@ -232,7 +232,8 @@ bool vtkFeaturePointExtraction::MeasureSpacing(
     {
       return false;
     }
-    scored.Spacing = neighborhoods->ComputeMeanSpacing(scored.Ids, scored.Table, k);
+    scored.Spacing = this->GlobalMeanSpacing(
+      neighborhoods, neighborhoods->ComputeMeanSpacing(scored.Ids, scored.Table, k));
   }
   this->UpdateProgress(0.1);
   return !this->GetAbortExecute() && this->CheckSpacing(scored.Spacing, neighborhoods);
@@ -397,7 +398,8 @@ int vtkFeaturePointExtraction::RequestData(
     return finish();
   }
   const std::vector<vtkIdType>& ids = scored.Ids;
-  this->NumberOfCandidates = static_cast<vtkIdType>(ids.size() - scored.Background.size());
+  this->NumberOfCandidates =
+    this->GlobalSum(this->CountOwned(ids) - this->CountOwned(scored.Background));
 
   // m(j) for the scored points and for every point they weigh in Eqs. 4 and 6, then the scores.
   this->BeginStage("scores");
@@ -410,8 +412,8 @@ int vtkFeaturePointExtraction::RequestData(
   ScoreParameters parameters{ k, this->NormalNeighbors, this->SSINeighbors, this->DensityNeighbors,
     this->CenterNeighbors, this->SSICenter == DENSITY_WEIGHTED_MEAN, this->Alpha, d,
     this->GaussianRadiusFactor * d,
-    { neighborhoods->GetCenter()[0], neighborhoods->GetCenter()[1],
-      neighborhoods->GetCenter()[2] } };
+    { this->CloudCenter(neighborhoods)[0], this->CloudCenter(neighborhoods)[1],
+      this->CloudCenter(neighborhoods)[2] } };
   ScoreWorker worker{ featurepoints::PointReader(neighborhoods->GetPoints()), ids,
     scored.Table.data(), meanDistance.data(), parameters, normals->GetPointer(0),
     ssi->GetPointer(0), pdi->GetPointer(0), score->GetPointer(0), {} };

@@ -82,6 +82,8 @@
 #include "FeaturePointsFiltersModule.h" // For export macro
 #include "vtkFeaturePointDetector.h"
 
+#include <algorithm> // For std::max
+
 class FEATUREPOINTSFILTERS_EXPORT vtkFeaturePointExtraction : public vtkFeaturePointDetector
 {
 public:
@@ -182,6 +184,21 @@ public:
 
   /** The score array: "F". ABSOLUTE thresholds are on F (dimensionless; default 1). */
   const char* GetScoreArrayName() const override { return "F"; }
+
+  /**
+   * Distributed runs: the largest k of the method around each own point, and the neighbours'
+   * own DensityNeighbors nearest (m(j) of Eqs. 4 and 6), so two generations. The voxel
+   * pre-filter's cloud-wide voxel figures are not reduced yet: with UseVoxelFilter on this
+   * returns false (see the superclass).
+   */
+  bool GetHaloExtent(int& neighbors, int& levels) const override
+  {
+    neighbors = std::max(std::max(this->NormalNeighbors, this->SSINeighbors),
+      std::max(this->DensityNeighbors,
+        this->SSICenter == DENSITY_WEIGHTED_MEAN ? this->CenterNeighbors : 0));
+    levels = 2;
+    return !this->UseVoxelFilter;
+  }
 
 protected:
   vtkFeaturePointExtraction();

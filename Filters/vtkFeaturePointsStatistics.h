@@ -5,7 +5,10 @@
 #define vtkFeaturePointsStatistics_h
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace featurepoints
@@ -69,10 +72,109 @@ void CentralRange(std::vector<T>& values, T& low, T& high)
 }
 
 /**
- * The mean of the values that are at most `factor` times their upper median, summed in the
- * given order (so that the result does not depend on a thread count): a mean spacing from
- * nearest-neighbour distances that one far point does not set. `values` must be positive; 0 when
- * there is none.
+ * An exact sum of doubles: every finite value is added without rounding into a fixed-point integer
+ * of 2112 bits (66 limbs of 32 bits, each held in an int64 so that 2^31 additions need no carry),
+ * which covers every finite double. The sum therefore does not depend on the order of the
+ * additions, nor on how the values are split between threads or processes: two partial sums merge
+ * exactly (Merge, or a sum of the limbs element by element). Value() rounds the exact sum once.
+ * Used where a result must be the same whatever the order of the points (the mean spacing of a
+ * cloud split between processes, docs/design.md "Distributed runs").
+ */
+class ExactSum
+{
+public:
+  static constexpr int NumberOfLimbs = 66;
+  // A value m 2^e (m an integer of 53 bits, e >= -1074) lands at bit e + Bias of the integer.
+  static constexpr int Bias = 1074;
+
+  void Add(double v)
+  {
+    if (v == 0.0 || !std::isfinite(v))
+    {
+      return;
+    }
+    int e;
+    const double f = std::frexp(std::abs(v), &e); // |v| = f 2^e, f in [0.5, 1)
+    int64_t m = static_cast<int64_t>(std::ldexp(f, 53));
+    int shift = e - 53 + Bias; // bit position of m's lowest bit
+    if (shift < 0)             // subnormal: the bits below 2^-1074 are zero
+    {
+      m >>= -shift;
+      shift = 0;
+    }
+    const int limb = shift / 32;
+    const int offset = shift % 32;
+    // m << offset spans at most 85 bits: three limbs.
+    const uint64_t low = static_cast<uint64_t>(m) << offset;
+    const uint64_t high = offset ? static_cast<uint64_t>(m) >> (64 - offset) : 0;
+    const int64_t sign = v < 0.0 ? -1 : 1;
+    this->Limbs[limb] += sign * static_cast<int64_t>(low & 0xffffffffu);
+    this->Limbs[limb + 1] += sign * static_cast<int64_t>(low >> 32);
+    if (limb + 2 < NumberOfLimbs)
+    {
+      this->Limbs[limb + 2] += sign * static_cast<int64_t>(high);
+    }
+    if (++this->Pending == (1 << 30))
+    {
+      this->Normalize();
+    }
+  }
+
+  void Merge(const ExactSum& other)
+  {
+    this->Normalize();
+    ExactSum o(other);
+    o.Normalize();
+    for (int i = 0; i < NumberOfLimbs; ++i)
+    {
+      this->Limbs[i] += o.Limbs[i];
+    }
+    this->Normalize();
+  }
+
+  // Carries: every limb but the last in [0, 2^32). The representation is then unique.
+  void Normalize()
+  {
+    for (int i = 0; i + 1 < NumberOfLimbs; ++i)
+    {
+      const int64_t carry = this->Limbs[i] >> 32; // floor division by 2^32
+      this->Limbs[i] -= carry * (int64_t(1) << 32);
+      this->Limbs[i + 1] += carry;
+    }
+    this->Pending = 0;
+  }
+
+  /** The sum, rounded to a double; a function of the exact sum only. */
+  double Value() const
+  {
+    ExactSum n(*this);
+    n.Normalize();
+    // From the most significant limb down: once the partial value exceeds 2^64 times the next
+    // limb's weight, the rest cannot change it by more than the rounding already made.
+    double sum = 0.0;
+    for (int i = NumberOfLimbs - 1; i >= 0; --i)
+    {
+      if (n.Limbs[i] != 0)
+      {
+        sum += std::ldexp(static_cast<double>(n.Limbs[i]), 32 * i - Bias);
+      }
+    }
+    return sum;
+  }
+
+  /** The limbs, for a reduction across processes (sum them element by element). */
+  int64_t* GetLimbs() { return this->Limbs.data(); }
+
+private:
+  std::array<int64_t, NumberOfLimbs> Limbs{};
+  int64_t Pending = 0;
+};
+
+/**
+ * The mean of the values that are at most `factor` times their upper median, summed exactly
+ * (ExactSum), so that the result depends neither on the order of the values nor on a thread or
+ * process count: a mean spacing from nearest-neighbour distances that one far point does not set.
+ * `values` must be positive; 0 when there is none.
  */
 inline double MeanWithoutOutliers(const std::vector<double>& values, double factor)
 {
@@ -82,17 +184,17 @@ inline double MeanWithoutOutliers(const std::vector<double>& values, double fact
   }
   std::vector<double> sorted(values);
   const double limit = factor * UpperMedian(sorted);
-  double sum = 0.0;
+  ExactSum sum;
   std::size_t count = 0;
   for (double v : values)
   {
     if (v <= limit)
     {
-      sum += v;
+      sum.Add(v);
       ++count;
     }
   }
-  return count > 0 ? sum / static_cast<double>(count) : 0.0;
+  return count > 0 ? sum.Value() / static_cast<double>(count) : 0.0;
 }
 } // namespace featurepoints
 

@@ -45,7 +45,7 @@ int vtkSurfaceVariationFeatures::RequestData(
         input->GetPoints(), n, this->NumberOfNeighbors, neighborhoods, ids, table, 0.7))
   {
     featurepoints::LocalShapeWorker worker{ neighborhoods->GetPoints(), ids, table.data(),
-      this->NumberOfNeighbors, neighborhoods->GetCenter(), normals->GetPointer(0),
+      this->NumberOfNeighbors, this->CloudCenter(neighborhoods), normals->GetPointer(0),
       variation->GetPointer(0), nullptr, {} };
     vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), worker);
     this->ApplyThreshold(variation->GetPointer(0), ids, nullptr, nullptr, mask->GetPointer(0));

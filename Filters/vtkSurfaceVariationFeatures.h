@@ -38,6 +38,14 @@ public:
   /** The score array: "SurfaceVariation". */
   const char* GetScoreArrayName() const override { return "SurfaceVariation"; }
 
+  /** Distributed runs: each own point's NumberOfNeighbors nearest (see the superclass). */
+  bool GetHaloExtent(int& neighbors, int& levels) const override
+  {
+    neighbors = this->NumberOfNeighbors;
+    levels = 1;
+    return true;
+  }
+
 protected:
   vtkSurfaceVariationFeatures();
   ~vtkSurfaceVariationFeatures() override;

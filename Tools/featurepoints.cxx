@@ -47,6 +47,13 @@
 
 #include "featurepointsLines.h"
 
+#ifdef FEATUREPOINTS_HAVE_MPI
+#include "vtkDistributedFeaturePoints.h"
+#include "vtkMPI.h"
+#include "vtkMPIController.h"
+#include "vtkMultiProcessController.h"
+#endif
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -529,6 +536,12 @@ void PrintHelp()
 
 bool Quiet = false;
 
+// Under mpiexec with more than one process: the processes (nullptr otherwise), and this one's rank.
+#ifdef FEATUREPOINTS_HAVE_MPI
+vtkMPIController* Processes = nullptr;
+#endif
+int Rank = 0;
+
 [[noreturn]] void Fail(int code, const std::string& message)
 {
   std::fprintf(stderr, "featurepoints: %s\n", message.c_str());
@@ -536,7 +549,28 @@ bool Quiet = false;
   {
     std::fprintf(stderr, "Try 'featurepoints --help'.\n");
   }
+#ifdef FEATUREPOINTS_HAVE_MPI
+  if (Processes)
+  {
+    // The other processes wait for this one: end them all, with this exit code.
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, code);
+  }
+#endif
   std::exit(code);
+}
+
+// The number of processes mpiexec started (Open MPI, MPICH/Hydra, PMIx), or 1.
+int LaunchedProcesses()
+{
+  for (const char* name : { "OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS" })
+  {
+    if (const char* value = std::getenv(name))
+    {
+      return std::max(1, std::atoi(value));
+    }
+  }
+  return 1;
 }
 
 // VTK's warnings as one line each (errors are reported by the program itself).
@@ -1316,6 +1350,17 @@ public:
 
   int Execute()
   {
+    if (Rank != 0)
+    {
+      // Another process of a distributed run: its share of the work, nothing on the terminal or
+      // in the files (process 0 reads, writes and reports).
+      this->SetThreads();
+      auto empty = vtkSmartPointer<vtkPolyData>::New();
+      empty->SetPoints(vtkNew<vtkPoints>());
+      this->Cloud = empty;
+      this->Extract();
+      return ExitSuccess;
+    }
     this->CheckFiles();
     InstallSignalHandlers();
     this->SetThreads();
@@ -1395,11 +1440,18 @@ private:
   // More threads than cores only slows the run down (and TBB says so on the console).
   void SetThreads() const
   {
+    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     if (this->S.Threads <= 0)
     {
+      // Several processes on one machine share its cores (mpiexec says how many run here).
+      const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+      const int here = local ? std::max(1, std::atoi(local)) : 1;
+      if (here > 1)
+      {
+        vtkSMPTools::Initialize(std::max(1, cores / here));
+      }
       return;
     }
-    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     if (this->S.Threads > cores && !Quiet)
     {
       std::fprintf(stderr,
@@ -1484,14 +1536,42 @@ private:
     this->Filter->AddObserver(vtkCommand::ErrorEvent, filterError);
     this->Meter->Stage("extracting");
     const auto start = Clock::now();
-    this->Filter->Update();
-    this->Meter->Finish();
-    this->Times.emplace_back("extract", Seconds(start));
-    if (!filterError->Message.empty())
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (Processes)
     {
-      Fail(ExitFailure, s.Input + ": " + filterError->Message);
+      // Process 0 holds the cloud: the driver splits it, each process scores its piece, and the
+      // result comes back to process 0 in the input's order.
+      this->Driver = vtkSmartPointer<vtkDistributedFeaturePoints>::New();
+      this->Driver->SetController(Processes);
+      this->Driver->SetDetector(this->Filter);
+      this->Driver->SetInputData(this->Filter->GetInputDataObject(0, 0));
+      this->Driver->GatherOutputOn();
+      this->Driver->AddObserver(vtkCommand::ErrorEvent, filterError);
+      this->Driver->Update();
+      this->Meter->Finish();
+      if (Rank != 0)
+      {
+        return;
+      }
+      this->Times.emplace_back("extract", Seconds(start));
+      if (!filterError->Message.empty())
+      {
+        Fail(ExitFailure, s.Input + ": " + filterError->Message);
+      }
+      this->Result = this->Driver->GetOutput();
     }
-    this->Result = this->Filter->GetOutput();
+    else
+#endif
+    {
+      this->Filter->Update();
+      this->Meter->Finish();
+      this->Times.emplace_back("extract", Seconds(start));
+      if (!filterError->Message.empty())
+      {
+        Fail(ExitFailure, s.Input + ": " + filterError->Message);
+      }
+      this->Result = this->Filter->GetOutput();
+    }
     if (exponent != 0)
     {
       UnscaleResult(this->Result, this->Cloud, *this->M, exponent, s.Input);
@@ -1501,7 +1581,22 @@ private:
     {
       Fail(ExitFailure, s.Input + ": " + nonFinite);
     }
-    WarnReplacedArrays(this->Cloud, this->Result);
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (this->Driver)
+    {
+      // The result's arrays are copies: the driver knows which input arrays the method replaced.
+      for (int a = 0; a < this->Driver->GetNumberOfReplacedArrays() && !Quiet; ++a)
+      {
+        std::fprintf(stderr,
+          "featurepoints: note: the input's point array '%s' is replaced by the method's own\n",
+          this->Driver->GetReplacedArray(a));
+      }
+    }
+    else
+#endif
+    {
+      WarnReplacedArrays(this->Cloud, this->Result);
+    }
     this->Grown = this->M->GrowThreshold ? this->M->GrowThreshold(this->Filter) : std::nan("");
   }
 
@@ -1685,6 +1780,22 @@ private:
       stages += line;
     }
     std::printf("extract (s) %s\n", stages.c_str());
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (this->Driver)
+    {
+      std::printf("ranks       %d%s\n", this->Driver->GetNumberOfRanks(),
+        this->Driver->GetDistributed()
+          ? ""
+          : " (run on rank 0 alone: this method with these options is not distributed yet, or the "
+            "cloud is too small to split)");
+      for (int r = 0; r < this->Driver->GetNumberOfRanks(); ++r)
+      {
+        std::printf("rank %-6d %lld own points, %lld halo points\n", r,
+          static_cast<long long>(this->Driver->GetNumberOfOwnedPoints(r)),
+          static_cast<long long>(this->Driver->GetNumberOfHaloPoints(r)));
+      }
+    }
+#endif
   }
 
   const Settings& S;
@@ -1694,6 +1805,9 @@ private:
   vtkNew<vtkPointCloudReader> Reader;
   vtkSmartPointer<vtkPointSet> Cloud;
   vtkSmartPointer<vtkFeaturePointDetector> Filter;
+#ifdef FEATUREPOINTS_HAVE_MPI
+  vtkSmartPointer<vtkDistributedFeaturePoints> Driver;
+#endif
   vtkPolyData* Result = nullptr;
   double Grown = std::nan(""); // see Method::GrowThreshold
   vtkNew<vtkFeatureCurveExtraction> Curves;
@@ -1708,11 +1822,36 @@ int main(int argc, char* argv[])
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   vtkNew<OneLineOutputWindow> messages;
   vtkOutputWindow::SetInstance(messages);
+#ifdef FEATUREPOINTS_HAVE_MPI
+  // MPI only when mpiexec started several processes: a plain run neither needs nor starts it.
+  vtkNew<vtkMPIController> processes;
+  if (LaunchedProcesses() > 1)
+  {
+    processes->Initialize(&argc, &argv);
+    if (processes->GetNumberOfProcesses() > 1)
+    {
+      Processes = processes;
+      Rank = processes->GetLocalProcessId();
+      vtkMultiProcessController::SetGlobalController(processes);
+    }
+  }
+#endif
   const Settings s = ParseArguments(argc, argv);
+  if (Rank != 0)
+  {
+    Quiet = true; // process 0 reports for all
+  }
   try
   {
     FeaturePointsRun run(s);
-    return run.Execute();
+    const int code = run.Execute();
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (Processes)
+    {
+      Processes->Finalize();
+    }
+#endif
+    return code;
   }
   catch (const std::bad_alloc&)
   {

@@ -1,0 +1,291 @@
+// vtkDistributedFeaturePoints under mpiexec: every point array of the result (FeatureMask, the
+// scores, the normals) must equal, bit for bit, the detector's on the whole cloud in one process,
+// for clouds given to the processes as contiguous pieces in input order. Run as
+// `mpiexec -n N TestDistributedFeaturePoints N`.
+// `TestDistributedFeaturePoints --write FILE N` (one process) writes the cloud with duplicates
+// built from an N-point bracket, for the command-line tool's test; `--write-plain FILE N` the
+// bracket itself (benchmarks).
+#include "vtkCreaseVotingFeatures.h"
+#include "vtkCurvatureDensityFeatures.h"
+#include "vtkDataArray.h"
+#include "vtkDistributedFeaturePoints.h"
+#include "vtkFeatureModelSource.h"
+#include "vtkFeaturePointExtraction.h"
+#include "vtkFieldData.h"
+#include "vtkMPIController.h"
+#include "vtkMath.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkNew.h"
+#include "vtkPointCloudIO.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkSurfaceVariationFeatures.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <string>
+
+namespace
+{
+// A generated part (the L bracket: convex and concave edges, a shallow crease), noisy.
+vtkSmartPointer<vtkPolyData> Bracket(vtkIdType n)
+{
+  vtkNew<vtkFeatureModelSource> source;
+  source->SetModel(vtkFeatureModelSource::BRACKET);
+  source->SetNumberOfPoints(n);
+  source->SetSeed(7);
+  source->Update();
+  vtkSmartPointer<vtkPolyData> cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(source->GetOutput()->GetPoints());
+  return cloud;
+}
+
+// The bracket with many duplicates: one point in 4 copied 1 to 5 times, the copies at random
+// places in the order, so that stacks straddle the pieces.
+vtkSmartPointer<vtkPolyData> WithDuplicates(vtkPolyData* base)
+{
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(11);
+  const vtkIdType n = base->GetNumberOfPoints();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(base->GetPoints()->GetDataType());
+  std::vector<vtkIdType> order;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    order.push_back(i);
+    if (i % 4 == 0)
+    {
+      random->Next();
+      const int copies = 1 + static_cast<int>(5 * random->GetValue());
+      for (int c = 0; c < copies; ++c)
+      {
+        order.push_back(i);
+      }
+    }
+  }
+  for (size_t i = order.size() - 1; i > 0; --i)
+  {
+    random->Next();
+    std::swap(order[i], order[static_cast<size_t>(random->GetValue() * (i + 1)) % (i + 1)]);
+  }
+  for (vtkIdType i : order)
+  {
+    points->InsertNextPoint(base->GetPoint(i));
+  }
+  vtkSmartPointer<vtkPolyData> cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
+  // A point array that must travel with the points.
+  vtkNew<vtkUnsignedCharArray> tag;
+  tag->SetName("Tag");
+  tag->SetNumberOfValues(points->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    tag->SetValue(i, static_cast<unsigned char>(i % 251));
+  }
+  cloud->GetPointData()->AddArray(tag);
+  return cloud;
+}
+
+// Process `rank`'s contiguous share of the cloud.
+vtkSmartPointer<vtkPolyData> Piece(vtkPolyData* cloud, int rank, int nProcs)
+{
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  const vtkIdType first = n * rank / nProcs, last = n * (rank + 1) / nProcs;
+  vtkNew<vtkPoints> points;
+  points->SetDataType(cloud->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(last - first);
+  vtkSmartPointer<vtkPolyData> piece = vtkSmartPointer<vtkPolyData>::New();
+  piece->GetPointData()->CopyAllocate(cloud->GetPointData(), last - first);
+  for (vtkIdType i = first; i < last; ++i)
+  {
+    points->SetPoint(i - first, cloud->GetPoint(i));
+    piece->GetPointData()->CopyData(cloud->GetPointData(), i, i - first);
+  }
+  piece->SetPoints(points);
+  return piece;
+}
+
+// Every point array of `b` equals `a`'s, bit for bit; the field data's figures too.
+bool Same(vtkPolyData* a, vtkPolyData* b, const std::string& label)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints())
+  {
+    std::printf("%s: %lld points, one process %lld\n", label.c_str(),
+      static_cast<long long>(b->GetNumberOfPoints()),
+      static_cast<long long>(a->GetNumberOfPoints()));
+    return false;
+  }
+  bool same = true;
+  for (int i = 0; i < a->GetPointData()->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* x = a->GetPointData()->GetArray(i);
+    vtkDataArray* y = x ? b->GetPointData()->GetArray(x->GetName()) : nullptr;
+    if (!x)
+    {
+      continue;
+    }
+    if (!y || y->GetDataType() != x->GetDataType() ||
+      y->GetNumberOfComponents() != x->GetNumberOfComponents())
+    {
+      std::printf("%s: array %s missing or of another type\n", label.c_str(), x->GetName());
+      same = false;
+      continue;
+    }
+    const size_t bytes = static_cast<size_t>(x->GetDataTypeSize()) * x->GetNumberOfComponents();
+    vtkIdType differ = 0, first = -1;
+    for (vtkIdType t = 0; t < x->GetNumberOfTuples(); ++t)
+    {
+      if (std::memcmp(static_cast<char*>(x->GetVoidPointer(0)) + bytes * t,
+            static_cast<char*>(y->GetVoidPointer(0)) + bytes * t, bytes) != 0)
+      {
+        first = first < 0 ? t : first;
+        ++differ;
+      }
+    }
+    if (differ)
+    {
+      std::printf("%s: array %s differs at %lld points (first %lld: %.9g, one process %.9g)\n",
+        label.c_str(), x->GetName(), static_cast<long long>(differ), static_cast<long long>(first),
+        y->GetComponent(first, 0), x->GetComponent(first, 0));
+      same = false;
+    }
+  }
+  for (const char* name : { "MeanSpacing", "FeatureThreshold" })
+  {
+    vtkDataArray* x = a->GetFieldData()->GetArray(name);
+    vtkDataArray* y = b->GetFieldData()->GetArray(name);
+    if (!x || !y || x->GetTuple1(0) != y->GetTuple1(0))
+    {
+      std::printf("%s: field %s differs (%.17g, one process %.17g)\n", label.c_str(), name,
+        y ? y->GetTuple1(0) : -1.0, x ? x->GetTuple1(0) : -1.0);
+      same = false;
+    }
+  }
+  return same;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc == 4 && (std::string(argv[1]) == "--write" || std::string(argv[1]) == "--write-plain"))
+  {
+    std::string error;
+    vtkSmartPointer<vtkPolyData> cloud = Bracket(std::atoll(argv[3]));
+    if (std::string(argv[1]) == "--write")
+    {
+      cloud = WithDuplicates(cloud);
+    }
+    if (!vtkPointCloudIO::Write(cloud, argv[2], error))
+    {
+      std::printf("%s\n", error.c_str());
+      return EXIT_FAILURE;
+    }
+    return EXIT_SUCCESS;
+  }
+  vtkNew<vtkMPIController> controller;
+  controller->Initialize(&argc, &argv);
+  vtkMultiProcessController::SetGlobalController(controller);
+  const int rank = controller->GetLocalProcessId();
+  const int nProcs = controller->GetNumberOfProcesses();
+  const int expected = argc > 1 ? std::atoi(argv[1]) : nProcs;
+  int failed = nProcs == expected ? 0 : 1;
+  if (failed && rank == 0)
+  {
+    std::printf("started with %d processes, %d expected\n", nProcs, expected);
+  }
+
+  vtkSmartPointer<vtkPolyData> bracket = Bracket(20000);
+  vtkSmartPointer<vtkPolyData> duplicates = WithDuplicates(bracket);
+  struct Case
+  {
+    const char* Name;
+    vtkPolyData* Cloud;
+    std::function<vtkSmartPointer<vtkFeaturePointDetector>()> Make;
+    bool Distributed; // the cloud is split (false: run on process 0 alone)
+  };
+  auto make = [](vtkFeaturePointDetector* detector) {
+    vtkSmartPointer<vtkFeaturePointDetector> owned;
+    owned.TakeReference(detector);
+    return owned;
+  };
+  auto huang = [](bool voxels) {
+    auto f = vtkSmartPointer<vtkFeaturePointExtraction>::New();
+    f->SetUseVoxelFilter(voxels);
+    return vtkSmartPointer<vtkFeaturePointDetector>(f);
+  };
+  const Case cases[] = {
+    { "huang2023 (voxel filter off), bracket", bracket, [&] { return huang(false); }, true },
+    { "huang2023 (voxel filter off), duplicates", duplicates, [&] { return huang(false); }, true },
+    { "variation, bracket", bracket,
+      [&] { return make(vtkSurfaceVariationFeatures::New()); },
+      true },
+    { "curvature, duplicates", duplicates,
+      [&] { return make(vtkCurvatureDensityFeatures::New()); },
+      true },
+    { "huang2023 (defaults), duplicates", duplicates, [&] { return huang(true); }, false },
+    { "crease (defaults), bracket", bracket,
+      [&] { return make(vtkCreaseVotingFeatures::New()); },
+      false },
+  };
+  for (const Case& c : cases)
+  {
+    // One process on the whole cloud (process 0 only).
+    vtkSmartPointer<vtkPolyData> reference;
+    if (rank == 0)
+    {
+      auto single = c.Make();
+      single->SetInputData(c.Cloud);
+      single->Update();
+      reference = single->GetOutput();
+    }
+    const auto start = std::chrono::steady_clock::now();
+    auto detector = c.Make();
+    vtkNew<vtkDistributedFeaturePoints> driver;
+    driver->SetDetector(detector);
+    driver->SetInputData(Piece(c.Cloud, rank, nProcs));
+    driver->GatherOutputOn();
+    driver->Update();
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    int ok = 1;
+    if (rank == 0)
+    {
+      const std::string label = std::string(c.Name) + ", " + std::to_string(nProcs) + " ranks";
+      ok = Same(reference, driver->GetOutput(), label) ? 1 : 0;
+      if (driver->GetDistributed() != c.Distributed)
+      {
+        std::printf("%s: %s, expected %s\n", label.c_str(),
+          driver->GetDistributed() ? "split" : "not split", c.Distributed ? "split" : "not split");
+        ok = 0;
+      }
+      vtkIdType owned = 0, halo = 0;
+      for (int r = 0; r < driver->GetNumberOfRanks(); ++r)
+      {
+        owned += driver->GetNumberOfOwnedPoints(r);
+        halo += driver->GetNumberOfHaloPoints(r);
+      }
+      if (owned != c.Cloud->GetNumberOfPoints() || (c.Distributed && halo == 0))
+      {
+        std::printf("%s: %lld own points (of %lld), %lld halo points\n", label.c_str(),
+          static_cast<long long>(owned), static_cast<long long>(c.Cloud->GetNumberOfPoints()),
+          static_cast<long long>(halo));
+        ok = 0;
+      }
+      std::printf("%s: %s; %lld points, %lld feature points, halo %lld, %.2f s\n", label.c_str(),
+        ok ? "identical to one process" : "MISMATCH",
+        static_cast<long long>(c.Cloud->GetNumberOfPoints()),
+        static_cast<long long>(detector->GetNumberOfFeaturePoints()), static_cast<long long>(halo),
+        seconds);
+    }
+    controller->Broadcast(&ok, 1, 0);
+    failed += ok ? 0 : 1;
+  }
+  controller->Finalize();
+  return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+}

@@ -1,0 +1,45 @@
+# `mpiexec -n RANKS featurepoints IN OUT` against `featurepoints IN OUT`: the output files must be
+# byte-identical, and the summary must have the `ranks` line. Skipped (exit code 125) without
+# mpiexec. Variables: WRITER (TestDistributedFeaturePoints), CLI (featurepoints), WORK (a folder),
+# RANKS.
+find_program(MPIEXEC NAMES mpiexec)
+if(NOT MPIEXEC)
+  message("mpiexec not found: skipped") # SKIP_REGULAR_EXPRESSION
+  return()
+endif()
+file(MAKE_DIRECTORY "${WORK}")
+set(_cloud "${WORK}/duplicates.ply")
+execute_process(COMMAND "${WRITER}" --write "${_cloud}" 20000 RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "cannot write ${_cloud}")
+endif()
+set(_root)
+execute_process(COMMAND id -u OUTPUT_VARIABLE _uid OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(_uid STREQUAL "0")
+  set(_root --allow-run-as-root)
+endif()
+foreach(_case "huang2023;--method;huang2023;--voxel-filter;off" "crease;--method;crease")
+  list(GET _case 0 _name)
+  list(SUBLIST _case 1 -1 _options)
+  file(REMOVE "${WORK}/${_name}-1.ply" "${WORK}/${_name}-${RANKS}.ply")
+  execute_process(COMMAND "${CLI}" "${_cloud}" "${WORK}/${_name}-1.ply" ${_options} --quiet
+    RESULT_VARIABLE _rc)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "${_name}: featurepoints failed (${_rc})")
+  endif()
+  execute_process(COMMAND "${MPIEXEC}" --oversubscribe ${_root} -n ${RANKS} "${CLI}" "${_cloud}"
+    "${WORK}/${_name}-${RANKS}.ply" ${_options} --threads 1
+    RESULT_VARIABLE _rc OUTPUT_VARIABLE _summary ERROR_VARIABLE _errors)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "${_name}: mpiexec -n ${RANKS} featurepoints failed (${_rc}): ${_errors}")
+  endif()
+  if(NOT _summary MATCHES "ranks       ${RANKS}")
+    message(FATAL_ERROR "${_name}: no 'ranks ${RANKS}' line in the summary:\n${_summary}")
+  endif()
+  file(SHA256 "${WORK}/${_name}-1.ply" _one)
+  file(SHA256 "${WORK}/${_name}-${RANKS}.ply" _many)
+  if(NOT _one STREQUAL _many)
+    message(FATAL_ERROR "${_name}: the output of ${RANKS} ranks differs from one process's")
+  endif()
+  message("${_name}: ${RANKS} ranks give the same file as one process\n${_summary}")
+endforeach()
