@@ -76,26 +76,11 @@ double vtkFeaturePointDetector::GlobalUpperMedian(std::vector<double>& values) c
   }
   // The median of the union is a function of the values only (not of their order): gathered on
   // the first process, which has them all.
-  const int nProcs = this->Controller->GetNumberOfProcesses();
-  const int rank = this->Controller->GetLocalProcessId();
-  long long count = static_cast<long long>(values.size());
-  std::vector<long long> counts(nProcs, 0);
-  this->Controller->Gather(&count, counts.data(), 1, 0);
-  std::vector<vtkIdType> lengths(nProcs), offsets(nProcs, 0);
-  vtkIdType total = 0;
-  for (int p = 0; p < nProcs; ++p)
-  {
-    lengths[p] = static_cast<vtkIdType>(counts[p]);
-    offsets[p] = total;
-    total += lengths[p];
-  }
-  std::vector<double> all(rank == 0 ? std::max<vtkIdType>(total, 1) : 1);
-  this->Controller->GatherV(values.data(), all.data(), static_cast<vtkIdType>(values.size()),
-    lengths.data(), offsets.data(), 0);
+  std::vector<double> all(values);
+  this->GatherScores(all, nullptr);
   double median = 0.0;
-  if (rank == 0)
+  if (this->Controller->GetLocalProcessId() == 0)
   {
-    all.resize(total);
     median = featurepoints::UpperMedian(all);
   }
   this->Controller->Broadcast(&median, 1, 0);
