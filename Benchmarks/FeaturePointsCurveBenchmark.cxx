@@ -24,6 +24,8 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
 #include <array>
@@ -38,6 +40,7 @@ namespace
 {
 using namespace fpbench;
 bool verbose = false;
+std::string cacheDir; // --cache: the detector's outputs, kept between runs
 
 // The scored region: all but the 5 s next to the cut edges of the sheets and Model III's tube.
 struct Region
@@ -236,11 +239,41 @@ Scores Run(const Case& c, double& seconds)
   source->Update();
   vtkPolyData* cloud = source->GetOutput();
   const double s = cloud->GetFieldData()->GetArray("CleanMeanSpacing")->GetTuple1(0);
-  vtkNew<vtkCreaseVotingFeatures> detector;
-  detector->SetInputData(cloud);
+  // The detector's output, from the cache when it holds this case.
+  vtkSmartPointer<vtkPolyData> features;
+  const std::string cached = cacheDir.empty()
+    ? std::string()
+    : cacheDir + "/curves-" + std::to_string(c.Model) + "-" + std::to_string(c.Points) + "-" +
+      std::to_string(c.Density) + "-" + std::to_string(c.Noise) + "-" +
+      std::to_string(c.Separation) + ".vtp";
+  if (!cached.empty())
+  {
+    if (FILE* f = std::fopen(cached.c_str(), "rb"))
+    {
+      std::fclose(f);
+      vtkNew<vtkXMLPolyDataReader> reader;
+      reader->SetFileName(cached.c_str());
+      reader->Update();
+      features = reader->GetOutput();
+    }
+  }
+  if (!features || features->GetNumberOfPoints() != cloud->GetNumberOfPoints())
+  {
+    vtkNew<vtkCreaseVotingFeatures> detector;
+    detector->SetInputData(cloud);
+    detector->Update();
+    features = detector->GetOutput();
+    if (!cached.empty())
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetFileName(cached.c_str());
+      writer->SetInputData(features);
+      writer->SetDataModeToBinary();
+      writer->Write();
+    }
+  }
   vtkNew<vtkFeatureCurveExtraction> curves;
-  curves->SetInputConnection(detector->GetOutputPort());
-  detector->Update();
+  curves->SetInputData(features);
   const auto start = std::chrono::steady_clock::now();
   curves->Update();
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -283,17 +316,23 @@ int main(int argc, char* argv[])
     {
       verbose = true;
     }
+    else if (a == "--cache" && i + 1 < argc)
+    {
+      cacheDir = argv[++i];
+    }
     else if (a == "--only" && i + 1 < argc)
     {
       only = argv[++i];
     }
     else
     {
-      std::printf("usage: %s [--scale F] [--check] [--verbose] [--only NAME]\n"
+      std::printf("usage: %s [--scale F] [--check] [--verbose] [--only NAME] [--cache DIR]\n"
                   "  --scale F    fraction of the models' default point counts (default 0.3)\n"
                   "  --check      compare the figures with their floors (set at --scale 0.3)\n"
                   "  --verbose    list each polyline of the scored region\n"
-                  "  --only NAME  run the cases whose name contains NAME\n",
+                  "  --only NAME  run the cases whose name contains NAME\n"
+                  "  --cache DIR  keep the detector's outputs in DIR (an existing folder) and read\n"
+                  "               them back in later runs: for work on the curve filter alone\n",
         argv[0]);
       return a == "--help" || a == "-h" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
