@@ -1187,14 +1187,83 @@ V3 CurveRun::FitCrease(
     }
   }
   // c0 + a u0 = c1 + b u1
-  const double det = u[0][0] * (-u[1][1]) - u[0][1] * (-u[1][0]);
-  if (std::abs(det) < MinimumCreaseAngle)
+  auto intersect = [&](Eigen::Vector2d& p) {
+    const double det = u[0][0] * (-u[1][1]) - u[0][1] * (-u[1][0]);
+    if (std::abs(det) < MinimumCreaseAngle)
+    {
+      return false;
+    }
+    const Eigen::Vector2d r = c[1] - c[0];
+    const double a = (r[0] * (-u[1][1]) - r[1] * (-u[1][0])) / det;
+    p = c[0] + a * u[0];
+    return p.allFinite();
+  };
+  Eigen::Vector2d p;
+  if (!intersect(p))
   {
     return x;
   }
-  const Eigen::Vector2d r = c[1] - c[0];
-  const double a = (r[0] * (-u[1][1]) - r[1] * (-u[1][0])) / det;
-  const Eigen::Vector2d p = c[0] + a * u[0];
+  // Then as a hinge: each point to the face on its side of the bisector of the two half-lines
+  // from the crease. The nearest-line split takes the noise of one face near the crease for the
+  // other's, which tilts both lines towards each other and pulls the crease inside the bend.
+  for (int round = 0; round < 3; ++round)
+  {
+    Eigen::Vector2d h[2];
+    for (int g = 0; g < 2; ++g)
+    {
+      h[g] = (c[g] - p).dot(u[g]) >= 0.0 ? u[g] : Eigen::Vector2d(-u[g]);
+    }
+    const Eigen::Vector2d bisector = (h[0] + h[1]).normalized();
+    auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+      return a[0] * b[1] - a[1] * b[0];
+    };
+    const double side0 = cross(bisector, h[0]);
+    if (!bisector.allFinite() || side0 == 0.0)
+    {
+      break;
+    }
+    for (size_t k = 0; k < q.size(); ++k)
+    {
+      side[k] = (cross(bisector, q[k] - p) >= 0.0) == (side0 > 0.0) ? 0 : 1;
+    }
+    bool valid = true;
+    for (int g = 0; g < 2 && valid; ++g)
+    {
+      Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
+      Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+      int n = 0;
+      for (size_t k = 0; k < q.size(); ++k)
+      {
+        if (side[k] == g)
+        {
+          centroid += q[k];
+          ++n;
+        }
+      }
+      if (n < 5)
+      {
+        valid = false;
+        break;
+      }
+      centroid /= n;
+      for (size_t k = 0; k < q.size(); ++k)
+      {
+        if (side[k] == g)
+        {
+          m += (q[k] - centroid) * (q[k] - centroid).transpose();
+        }
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> line(m);
+      c[g] = centroid;
+      u[g] = line.eigenvectors().col(1);
+    }
+    Eigen::Vector2d moved;
+    if (!valid || !intersect(moved))
+    {
+      break;
+    }
+    p = moved;
+  }
   if (!p.allFinite() || p.norm() > 2.0 * this->S)
   {
     return x;
