@@ -702,8 +702,9 @@ void CurveRun::RemoveUnsupported()
 std::vector<Chain> CurveRun::MergeThrough(
   std::vector<Chain> chains, std::vector<std::array<int, 2>>& through) const
 {
-  // The outward direction of a chain at one of its ends, over about CornerWindow.
-  const int w = std::max(1, static_cast<int>(std::lround(CornerWindow * this->S / this->H)));
+  // The outward direction of a chain at one of its ends, over 2 FitRadius: a join's hook at the
+  // very end does not turn the curve.
+  const int w = std::max(1, static_cast<int>(std::lround(2.0 * this->R / this->H)));
   auto outward = [&](const Chain& chain, bool atStart) {
     const int count = static_cast<int>(chain.Ids.size());
     const int k = std::min(w, count - 1);
