@@ -676,6 +676,15 @@ void CurveRun::RemoveUnsupported()
     {
       continue;
     }
+    // A piece on its own no longer than one line fit's window: nothing the fits resolve.
+    if (freeStart && freeEnd)
+    {
+      for (size_t k = 1; k < chain.Ids.size(); ++k)
+      {
+        this->G.Unlink(chain.Ids[k - 1], chain.Ids[k]);
+      }
+      continue;
+    }
     // The feature points along the chain, each once.
     std::set<vtkIdType> near;
     for (int v : chain.Ids)

@@ -26,7 +26,8 @@
  *    Curves shorter than JoinDistance between two junctions (a corner traced round as well as
  *    along its edges) collapse into one corner.
  * 3. Cleaning. Branches shorter than MinimumLength s that end freely (spurs), and pieces shorter
- *    than that, are removed; so are free branches and pieces shorter than 2 FitRadius s whose
+ *    than that, are removed, and pieces on their own shorter than 2 FitRadius s (no longer than
+ *    one line fit's window); so are free branches shorter than 2 FitRadius s whose
  *    feature points are mostly (3 in 4) unsupported: scored below half the detector's threshold
  *    (the input's active scalars and its `FeatureThreshold` field; border points count as
  *    supported), points that a rule other than the vote marked (clean clouds' unexplained fits
