@@ -8,8 +8,9 @@
 // s is the clean cloud's mean spacing. The paper's models and the ribs are pieces cut from larger
 // sheets (Model III's cylinder a tube): their cut edges are borders of the cloud, not features,
 // so the region within 5 s of a cut is not scored (as in FeaturePointsQualityBenchmark).
-// With --check, figures are compared with floors (a little below those measured when they were
-// set) and the program fails when quality is lost.
+// With --check, figures are compared with floors (a little beyond the worst measured at --scale 0.1
+// and 0.3 when they were set): every part at sigma = 0.5 s, and the clean parts with features
+// denser and the plate 1 s thick held to the targets; the program fails when quality is lost.
 #include "FeaturePointsBenchmarkFigures.h"
 
 #include "vtkCellArray.h"
@@ -289,6 +290,17 @@ void PrintRow(const std::string& name, const Case& c, const Scores& r, double se
     r.PerCurve, r.MeanDistance, seconds);
 }
 
+// The rows besides sigma = 0.5 s that meet the targets: the clean parts with features denser, and
+// the plate 1 s thick. The clean uniform parts and the other real-part rows are printed only.
+bool HeldToTargets(const Case& c)
+{
+  if (c.Noise == 0.0)
+  {
+    return c.Density > 1.0;
+  }
+  return c.Model == vtkFeatureModelSource::THIN_PLATE && c.Separation == 0.5;
+}
+
 void Header()
 {
   std::printf("%-24s %-8s %5s %7s | %5s %5s %5s | %-15s | %5s | %5s\n", "case", "features", "sigma",
@@ -300,6 +312,7 @@ void Header()
 int main(int argc, char* argv[])
 {
   double scale = 0.3;
+  vtkIdType large = 200000;
   std::string only;
   for (int i = 1; i < argc; ++i)
   {
@@ -316,6 +329,10 @@ int main(int argc, char* argv[])
     {
       verbose = true;
     }
+    else if (a == "--points" && i + 1 < argc)
+    {
+      large = std::atoll(argv[++i]);
+    }
     else if (a == "--cache" && i + 1 < argc)
     {
       cacheDir = argv[++i];
@@ -326,9 +343,12 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::printf("usage: %s [--scale F] [--check] [--verbose] [--only NAME] [--cache DIR]\n"
+      std::printf("usage: %s [--scale F] [--points N] [--check] [--verbose] [--only NAME] "
+                  "[--cache DIR]\n"
                   "  --scale F    fraction of the models' default point counts (default 0.3)\n"
-                  "  --check      compare the figures with their floors (set at --scale 0.3)\n"
+                  "  --points N   the section of large parts at sigma 0.5 s: N points (default\n"
+                  "               200000; 0 leaves it out)\n"
+                  "  --check      compare the figures with their floors (set at --scale 0.1 and 0.3)\n"
                   "  --verbose    list each polyline of the scored region\n"
                   "  --only NAME  run the cases whose name contains NAME\n"
                   "  --cache DIR  keep the detector's outputs in DIR (an existing folder) and read\n"
@@ -340,6 +360,11 @@ int main(int argc, char* argv[])
   if (!(scale > 0.0 && scale <= 10.0))
   {
     std::fprintf(stderr, "error: --scale must lie in (0, 10]\n");
+    return EXIT_FAILURE;
+  }
+  if (large < 0 || large > 100000000)
+  {
+    std::fprintf(stderr, "error: --points must lie in [0, 100000000]\n");
     return EXIT_FAILURE;
   }
   std::printf("FeaturePoints: feature curves against the exact curves, default parameters\n"
@@ -367,17 +392,25 @@ int main(int argc, char* argv[])
       PrintRow(entry.first, entry.second, r, seconds);
       f1s.push_back(r.F1);
       perCurve.push_back(r.PerCurve);
+      const std::string row = entry.first + (entry.second.Density > 1.0 ? " denser " : " uniform ") +
+        std::to_string(entry.second.Points) + " sigma " + std::to_string(entry.second.Noise);
       if (entry.second.Noise == 0.5)
       {
         distances.push_back(r.MeanDistance);
-        // The parts at sigma = 0.5 s have floors a little beyond the worst row measured at
-        // --scale 0.1 and 0.3 (F1 0.915, 1.86 lines per true curve, 0.68 s); the targets of the
-        // header line are not all met, and the clean and real-part rows are printed only.
-        const std::string row = entry.first + (entry.second.Density > 1.0 ? " denser " : " uniform ") +
-          std::to_string(entry.second.Points);
+        // The parts at sigma = 0.5 s: floors a little beyond the worst row measured at --scale
+        // 0.1 and 0.3 and at 200,000 points (F1 0.915, 1.71 lines per true curve, 0.54 s). At
+        // 200,000 points, pieces of the sheets' cut-edge borders lie within the scored region
+        // (5 s is narrower there than the border curves' wander): up to 3.29 lines per true curve.
         Floor(row + " F1", r.F1, 0.90);
-        Ceiling(row + " lines per true curve", r.PerCurve, 2.0);
-        Ceiling(row + " mean distance (s)", r.MeanDistance, 0.75);
+        Ceiling(row + " lines per true curve", r.PerCurve, entry.second.Points > 100000 ? 3.6 : 1.9);
+        Ceiling(row + " mean distance (s)", r.MeanDistance, 0.6);
+      }
+      else if (HeldToTargets(entry.second))
+      {
+        // Rows that meet the targets at --scale 0.1 and 0.3 (worst: F1 0.971, 1.08 lines per
+        // true curve) are held to them.
+        Floor(row + " F1", r.F1, 0.95);
+        Ceiling(row + " lines per true curve", r.PerCurve, 1.2);
       }
     }
   };
@@ -409,7 +442,22 @@ int main(int argc, char* argv[])
   }
   runSection(cases);
 
-  std::printf("\n3. Real-part situations, uniform, sigma = 0.25 s\n");
+  if (large > 0)
+  {
+    std::printf("\n3. Parts at %lld points, sigma = 0.5 s\n", static_cast<long long>(large));
+    cases.clear();
+    for (int model : parts)
+    {
+      for (double density : { 3.0, 1.0 })
+      {
+        cases.push_back(
+          { vtkFeatureModelSource::GetModelName(model), { model, large, density, 0.5, 5.0 } });
+      }
+    }
+    runSection(cases);
+  }
+
+  std::printf("\n4. Real-part situations, uniform, sigma = 0.25 s\n");
   cases.clear();
   const vtkIdType count = static_cast<vtkIdType>(std::llround(scale * 100000.0));
   for (const double apart : { 3.0, 5.0, 8.0 })
