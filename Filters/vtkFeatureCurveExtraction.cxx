@@ -717,7 +717,8 @@ std::vector<Chain> CurveRun::MergeThrough(
   auto outward = [&](const Chain& chain, bool atStart) {
     const int count = static_cast<int>(chain.Ids.size());
     const int k = std::min(w, count - 1);
-    const V3& end = this->G.Vertices[atStart ? chain.Ids.front() : chain.Ids.back()];
+    const int j = k / 4; // the last quarter aside: where a join or a corner placed the end
+    const V3& end = this->G.Vertices[atStart ? chain.Ids[j] : chain.Ids[count - 1 - j]];
     const V3& back = this->G.Vertices[atStart ? chain.Ids[k] : chain.Ids[count - 1 - k]];
     const V3 d = end - back;
     return d.norm() > 0.0 ? V3(d.normalized()) : V3(V3::Zero());
