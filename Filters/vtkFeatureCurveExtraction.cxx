@@ -301,8 +301,8 @@ public:
   void RemoveSpurs();
   // Free branches and pieces made of points nobody voted for.
   void RemoveUnsupported();
-  // Curves that go straight on through a junction (not a corner) are one curve; `through` gets,
-  // per merged chain end, the chain it ends on.
+  // Curves that go straight on through a junction are one curve; `through` gets, per chain end,
+  // the chain on whose inner vertex it ends (-1: none).
   std::vector<Chain> MergeThrough(std::vector<Chain> chains,
     std::vector<std::array<int, 2>>& through) const;
   void SplitAtCorners();
@@ -727,7 +727,8 @@ std::vector<Chain> CurveRun::MergeThrough(
   for (bool changed = true; changed;)
   {
     changed = false;
-    // Chain ends at each junction that is not a corner.
+    // Chain ends at each vertex where two or more curves meet (corners too: the straightness test
+    // leaves true corners alone).
     std::map<int, std::vector<std::pair<size_t, bool>>> atJunction;
     for (size_t c = 0; c < chains.size(); ++c)
     {
@@ -744,9 +745,21 @@ std::vector<Chain> CurveRun::MergeThrough(
         }
       }
     }
+    // Each chain merged at most once a pass (its ends move); the next pass takes the rest.
+    std::vector<unsigned char> touched(chains.size(), 0);
     for (const auto& entry : atJunction)
     {
       const auto& ends = entry.second;
+      bool stale = false;
+      for (const auto& end : ends)
+      {
+        stale = stale || touched[end.first];
+      }
+      if (stale)
+      {
+        changed = true;
+        continue;
+      }
       // The most nearly opposite pair, if straight enough.
       double best = ThroughCone;
       size_t a = 0, b = 0;
@@ -772,8 +785,9 @@ std::vector<Chain> CurveRun::MergeThrough(
       if (ca == cb)
       {
         chains[ca].Closed = true; // the curve comes round to itself
+        touched[ca] = 1;
         changed = true;
-        break;
+        continue;
       }
       // chains[ca] ending at the junction, then chains[cb] from it.
       std::vector<int> first = chains[ca].Ids, second = chains[cb].Ids;
@@ -789,8 +803,8 @@ std::vector<Chain> CurveRun::MergeThrough(
       chains[ca].Ids = first;
       chains[ca].Closed = false;
       alive[cb] = 0;
+      touched[ca] = touched[cb] = 1;
       changed = true;
-      break; // the chain ends moved
     }
   }
   std::vector<Chain> merged;
