@@ -35,6 +35,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <sys/stat.h>
 #include <vector>
 
 namespace
@@ -365,6 +366,12 @@ int main(int argc, char* argv[])
   if (large < 0 || large > 100000000)
   {
     std::fprintf(stderr, "error: --points must lie in [0, 100000000]\n");
+    return EXIT_FAILURE;
+  }
+  struct stat folder;
+  if (!cacheDir.empty() && (::stat(cacheDir.c_str(), &folder) != 0 || !S_ISDIR(folder.st_mode)))
+  {
+    std::fprintf(stderr, "error: --cache %s: no such folder\n", cacheDir.c_str());
     return EXIT_FAILURE;
   }
   std::printf("FeaturePoints: feature curves against the exact curves, default parameters\n"
