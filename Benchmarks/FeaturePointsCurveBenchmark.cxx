@@ -8,8 +8,9 @@
 // s is the clean cloud's mean spacing. The paper's models and the ribs are pieces cut from larger
 // sheets (Model III's cylinder a tube): their cut edges are borders of the cloud, not features,
 // so the region within 5 s of a cut is not scored (as in FeaturePointsQualityBenchmark).
-// With --check, figures are compared with floors (a little below those measured when they were
-// set) and the program fails when quality is lost.
+// With --check, figures are compared with floors (a little beyond the worst measured at --scale 0.1
+// and 0.3 when they were set): every part at sigma = 0.5 s, and the clean parts with features
+// denser and the plate 1 s thick held to the targets; the program fails when quality is lost.
 #include "FeaturePointsBenchmarkFigures.h"
 
 #include "vtkCellArray.h"
@@ -24,6 +25,8 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
 #include <array>
@@ -32,12 +35,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <sys/stat.h>
 #include <vector>
 
 namespace
 {
 using namespace fpbench;
 bool verbose = false;
+std::string cacheDir; // --cache: the detector's outputs, kept between runs
 
 // The scored region: all but the 5 s next to the cut edges of the sheets and Model III's tube.
 struct Region
@@ -236,11 +241,41 @@ Scores Run(const Case& c, double& seconds)
   source->Update();
   vtkPolyData* cloud = source->GetOutput();
   const double s = cloud->GetFieldData()->GetArray("CleanMeanSpacing")->GetTuple1(0);
-  vtkNew<vtkCreaseVotingFeatures> detector;
-  detector->SetInputData(cloud);
+  // The detector's output, from the cache when it holds this case.
+  vtkSmartPointer<vtkPolyData> features;
+  const std::string cached = cacheDir.empty()
+    ? std::string()
+    : cacheDir + "/curves-" + std::to_string(c.Model) + "-" + std::to_string(c.Points) + "-" +
+      std::to_string(c.Density) + "-" + std::to_string(c.Noise) + "-" +
+      std::to_string(c.Separation) + ".vtp";
+  if (!cached.empty())
+  {
+    if (FILE* f = std::fopen(cached.c_str(), "rb"))
+    {
+      std::fclose(f);
+      vtkNew<vtkXMLPolyDataReader> reader;
+      reader->SetFileName(cached.c_str());
+      reader->Update();
+      features = reader->GetOutput();
+    }
+  }
+  if (!features || features->GetNumberOfPoints() != cloud->GetNumberOfPoints())
+  {
+    vtkNew<vtkCreaseVotingFeatures> detector;
+    detector->SetInputData(cloud);
+    detector->Update();
+    features = detector->GetOutput();
+    if (!cached.empty())
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetFileName(cached.c_str());
+      writer->SetInputData(features);
+      writer->SetDataModeToBinary();
+      writer->Write();
+    }
+  }
   vtkNew<vtkFeatureCurveExtraction> curves;
-  curves->SetInputConnection(detector->GetOutputPort());
-  detector->Update();
+  curves->SetInputData(features);
   const auto start = std::chrono::steady_clock::now();
   curves->Update();
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -256,6 +291,17 @@ void PrintRow(const std::string& name, const Case& c, const Scores& r, double se
     r.PerCurve, r.MeanDistance, seconds);
 }
 
+// The rows besides sigma = 0.5 s that meet the targets: the clean parts with features denser, and
+// the plate 1 s thick. The clean uniform parts and the other real-part rows are printed only.
+bool HeldToTargets(const Case& c)
+{
+  if (c.Noise == 0.0)
+  {
+    return c.Density > 1.0;
+  }
+  return c.Model == vtkFeatureModelSource::THIN_PLATE && c.Separation == 0.5;
+}
+
 void Header()
 {
   std::printf("%-24s %-8s %5s %7s | %5s %5s %5s | %-15s | %5s | %5s\n", "case", "features", "sigma",
@@ -267,6 +313,7 @@ void Header()
 int main(int argc, char* argv[])
 {
   double scale = 0.3;
+  vtkIdType large = 200000;
   std::string only;
   for (int i = 1; i < argc; ++i)
   {
@@ -283,17 +330,30 @@ int main(int argc, char* argv[])
     {
       verbose = true;
     }
+    else if (a == "--points" && i + 1 < argc)
+    {
+      large = std::atoll(argv[++i]);
+    }
+    else if (a == "--cache" && i + 1 < argc)
+    {
+      cacheDir = argv[++i];
+    }
     else if (a == "--only" && i + 1 < argc)
     {
       only = argv[++i];
     }
     else
     {
-      std::printf("usage: %s [--scale F] [--check] [--verbose] [--only NAME]\n"
+      std::printf("usage: %s [--scale F] [--points N] [--check] [--verbose] [--only NAME] "
+                  "[--cache DIR]\n"
                   "  --scale F    fraction of the models' default point counts (default 0.3)\n"
-                  "  --check      compare the figures with their floors (set at --scale 0.3)\n"
+                  "  --points N   the section of large parts at sigma 0.5 s: N points (default\n"
+                  "               200000; 0 leaves it out)\n"
+                  "  --check      compare the figures with their floors (set at --scale 0.1 and 0.3)\n"
                   "  --verbose    list each polyline of the scored region\n"
-                  "  --only NAME  run the cases whose name contains NAME\n",
+                  "  --only NAME  run the cases whose name contains NAME\n"
+                  "  --cache DIR  keep the detector's outputs in DIR (an existing folder) and read\n"
+                  "               them back in later runs: for work on the curve filter alone\n",
         argv[0]);
       return a == "--help" || a == "-h" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
@@ -301,6 +361,17 @@ int main(int argc, char* argv[])
   if (!(scale > 0.0 && scale <= 10.0))
   {
     std::fprintf(stderr, "error: --scale must lie in (0, 10]\n");
+    return EXIT_FAILURE;
+  }
+  if (large < 0 || large > 100000000)
+  {
+    std::fprintf(stderr, "error: --points must lie in [0, 100000000]\n");
+    return EXIT_FAILURE;
+  }
+  struct stat folder;
+  if (!cacheDir.empty() && (::stat(cacheDir.c_str(), &folder) != 0 || !S_ISDIR(folder.st_mode)))
+  {
+    std::fprintf(stderr, "error: --cache %s: no such folder\n", cacheDir.c_str());
     return EXIT_FAILURE;
   }
   std::printf("FeaturePoints: feature curves against the exact curves, default parameters\n"
@@ -328,17 +399,25 @@ int main(int argc, char* argv[])
       PrintRow(entry.first, entry.second, r, seconds);
       f1s.push_back(r.F1);
       perCurve.push_back(r.PerCurve);
+      const std::string row = entry.first + (entry.second.Density > 1.0 ? " denser " : " uniform ") +
+        std::to_string(entry.second.Points) + " sigma " + std::to_string(entry.second.Noise);
       if (entry.second.Noise == 0.5)
       {
         distances.push_back(r.MeanDistance);
-        // The parts at sigma = 0.5 s have floors a little beyond the worst row measured at
-        // --scale 0.1 and 0.3 (F1 0.915, 1.86 lines per true curve, 0.68 s); the targets of the
-        // header line are not all met, and the clean and real-part rows are printed only.
-        const std::string row = entry.first + (entry.second.Density > 1.0 ? " denser " : " uniform ") +
-          std::to_string(entry.second.Points);
+        // The parts at sigma = 0.5 s: floors a little beyond the worst row measured at --scale
+        // 0.1 and 0.3 and at 200,000 points (F1 0.915, 1.71 lines per true curve, 0.54 s). At
+        // 200,000 points, pieces of the sheets' cut-edge borders lie within the scored region
+        // (5 s is narrower there than the border curves' wander): up to 3.29 lines per true curve.
         Floor(row + " F1", r.F1, 0.90);
-        Ceiling(row + " lines per true curve", r.PerCurve, 2.0);
-        Ceiling(row + " mean distance (s)", r.MeanDistance, 0.75);
+        Ceiling(row + " lines per true curve", r.PerCurve, entry.second.Points > 100000 ? 3.6 : 1.9);
+        Ceiling(row + " mean distance (s)", r.MeanDistance, 0.6);
+      }
+      else if (HeldToTargets(entry.second))
+      {
+        // Rows that meet the targets at --scale 0.1 and 0.3 (worst: F1 0.971, 1.08 lines per
+        // true curve) are held to them.
+        Floor(row + " F1", r.F1, 0.95);
+        Ceiling(row + " lines per true curve", r.PerCurve, 1.2);
       }
     }
   };
@@ -370,7 +449,22 @@ int main(int argc, char* argv[])
   }
   runSection(cases);
 
-  std::printf("\n3. Real-part situations, uniform, sigma = 0.25 s\n");
+  if (large > 0)
+  {
+    std::printf("\n3. Parts at %lld points, sigma = 0.5 s\n", static_cast<long long>(large));
+    cases.clear();
+    for (int model : parts)
+    {
+      for (double density : { 3.0, 1.0 })
+      {
+        cases.push_back(
+          { vtkFeatureModelSource::GetModelName(model), { model, large, density, 0.5, 5.0 } });
+      }
+    }
+    runSection(cases);
+  }
+
+  std::printf("\n4. Real-part situations, uniform, sigma = 0.25 s\n");
   cases.clear();
   const vtkIdType count = static_cast<vtkIdType>(std::llround(scale * 100000.0));
   for (const double apart : { 3.0, 5.0, 8.0 })

@@ -56,6 +56,12 @@ constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's point
 constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
 constexpr double SectionCore = 1.0; // s: points this near the vertex do not fit the faces' lines
 const double MinimumCreaseAngle = std::sin(vtkMath::RadiansFromDegrees(10.0)); // flatter faces: no intersection
+// A feature point whose score is below this share of the detector's threshold was not voted for
+// (added by a rule other than the vote: unexplained fits, growth); a free branch or a piece
+// whose points are mostly such is not a crease.
+constexpr double SupportShare = 0.5;
+constexpr double MinimumSupport = 0.25; // share of supported points a free branch needs
+const double ThroughCone = std::cos(vtkMath::RadiansFromDegrees(150.0)); // a curve goes on through a junction
 
 enum Types
 {
@@ -284,7 +290,7 @@ public:
 
   // Reads the cloud: all valid points, the feature points and the trace points among them.
   void SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray* types,
-    vtkDataArray* normals);
+    vtkDataArray* normals, vtkDataArray* scores, double threshold);
   // Line-likeness of each trace point's neighbourhood, and the seeding order.
   void OrderSeeds();
   // Stage 1: traces from every uncovered seed.
@@ -293,6 +299,12 @@ public:
   void JoinEnds();
   // Stage 3: spurs and short pieces out, splits where a curve turns sharply.
   void RemoveSpurs();
+  // Free branches and pieces made of points nobody voted for.
+  void RemoveUnsupported();
+  // Curves that go straight on through a junction are one curve; `through` gets, per chain end,
+  // the chain on whose inner vertex it ends (-1: none).
+  std::vector<Chain> MergeThrough(std::vector<Chain> chains,
+    std::vector<std::array<int, 2>>& through) const;
   void SplitAtCorners();
   // Short curves between two junctions (a corner traced round as well as along its edges) are
   // collapsed into one corner.
@@ -308,6 +320,7 @@ public:
   std::vector<V3> Normals;          // zero when the input has none
   std::vector<unsigned char> Type;  // FeatureType of the valid points (CONVEX when unknown)
   std::vector<unsigned char> Feature; // mask of the valid points
+  std::vector<unsigned char> Supported; // per trace point: voted for, or on a border
   std::vector<V3> TracePoints;
   std::vector<vtkIdType> TraceIndex; // index in Points of each trace point
   PointSearch AllSearch, TraceSearch;
@@ -334,8 +347,8 @@ private:
   mutable std::vector<vtkIdType> Scratch;
 };
 
-void CurveRun::SelectPoints(
-  vtkPointSet* input, vtkDataArray* mask, vtkDataArray* types, vtkDataArray* normals)
+void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray* types,
+  vtkDataArray* normals, vtkDataArray* scores, double threshold)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   for (vtkIdType i = 0; i < n; ++i)
@@ -366,6 +379,9 @@ void CurveRun::SelectPoints(
     {
       this->TraceIndex.push_back(static_cast<vtkIdType>(this->Points.size()));
       this->TracePoints.push_back(x);
+      // Without a score, every feature point supports a curve.
+      const double score = scores ? scores->GetTuple1(i) : threshold;
+      this->Supported.push_back(type == BORDER || !(score < SupportShare * threshold));
     }
     this->Points.push_back(x);
     this->PointIds.push_back(i);
@@ -644,6 +660,188 @@ void CurveRun::RemoveSpurs()
       return;
     }
   }
+}
+
+void CurveRun::RemoveUnsupported()
+{
+  std::vector<vtkIdType> ids;
+  for (const Chain& chain : this->ExtractChains())
+  {
+    // A curve between two junctions is not a branch: its points may lack votes where two
+    // creases run close together.
+    const bool freeStart = this->G.Degree(chain.Ids.front()) == 1;
+    const bool freeEnd = this->G.Degree(chain.Ids.back()) == 1;
+    if ((!chain.Closed && !freeStart && !freeEnd) ||
+      ChainLength(chain, this->G.Vertices) >= 2.0 * this->R)
+    {
+      continue;
+    }
+    // A piece on its own no longer than one line fit's window: nothing the fits resolve.
+    if (freeStart && freeEnd)
+    {
+      for (size_t k = 1; k < chain.Ids.size(); ++k)
+      {
+        this->G.Unlink(chain.Ids[k - 1], chain.Ids[k]);
+      }
+      continue;
+    }
+    // The feature points along the chain, each once.
+    std::set<vtkIdType> near;
+    for (int v : chain.Ids)
+    {
+      this->TraceSearch.Within(this->G.Vertices[v], CollisionRadius * this->S, ids);
+      near.insert(ids.begin(), ids.end());
+    }
+    size_t supported = 0;
+    for (vtkIdType i : near)
+    {
+      supported += this->Supported[i];
+    }
+    if (static_cast<double>(supported) >= MinimumSupport * static_cast<double>(near.size()))
+    {
+      continue;
+    }
+    for (size_t k = 1; k < chain.Ids.size(); ++k)
+    {
+      this->G.Unlink(chain.Ids[k - 1], chain.Ids[k]);
+    }
+  }
+}
+
+std::vector<Chain> CurveRun::MergeThrough(
+  std::vector<Chain> chains, std::vector<std::array<int, 2>>& through) const
+{
+  // The outward direction of a chain at one of its ends, over 2 FitRadius: a join's hook at the
+  // very end does not turn the curve.
+  const int w = std::max(1, static_cast<int>(std::lround(2.0 * this->R / this->H)));
+  auto outward = [&](const Chain& chain, bool atStart) {
+    const int count = static_cast<int>(chain.Ids.size());
+    const int k = std::min(w, count - 1);
+    const int j = k / 4; // the last quarter aside: where a join or a corner placed the end
+    const V3& end = this->G.Vertices[atStart ? chain.Ids[j] : chain.Ids[count - 1 - j]];
+    const V3& back = this->G.Vertices[atStart ? chain.Ids[k] : chain.Ids[count - 1 - k]];
+    const V3 d = end - back;
+    return d.norm() > 0.0 ? V3(d.normalized()) : V3(V3::Zero());
+  };
+  std::vector<unsigned char> alive(chains.size(), 1);
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    // Chain ends at each vertex where two or more curves meet (corners too: the straightness test
+    // leaves true corners alone).
+    std::map<int, std::vector<std::pair<size_t, bool>>> atJunction;
+    for (size_t c = 0; c < chains.size(); ++c)
+    {
+      if (!alive[c] || chains[c].Closed)
+      {
+        continue;
+      }
+      for (const bool atStart : { true, false })
+      {
+        const int v = atStart ? chains[c].Ids.front() : chains[c].Ids.back();
+        if (this->G.Degree(v) >= 2)
+        {
+          atJunction[v].emplace_back(c, atStart);
+        }
+      }
+    }
+    // Each chain merged at most once a pass (its ends move); the next pass takes the rest.
+    std::vector<unsigned char> touched(chains.size(), 0);
+    for (const auto& entry : atJunction)
+    {
+      const auto& ends = entry.second;
+      bool stale = false;
+      for (const auto& end : ends)
+      {
+        stale = stale || touched[end.first];
+      }
+      if (stale)
+      {
+        changed = true;
+        continue;
+      }
+      // The most nearly opposite pair, if straight enough.
+      double best = ThroughCone;
+      size_t a = 0, b = 0;
+      for (size_t i = 0; i < ends.size(); ++i)
+      {
+        for (size_t j = i + 1; j < ends.size(); ++j)
+        {
+          const double d = outward(chains[ends[i].first], ends[i].second)
+                             .dot(outward(chains[ends[j].first], ends[j].second));
+          if (d < best)
+          {
+            best = d;
+            a = i;
+            b = j;
+          }
+        }
+      }
+      if (best >= ThroughCone)
+      {
+        continue;
+      }
+      const size_t ca = ends[a].first, cb = ends[b].first;
+      if (ca == cb)
+      {
+        chains[ca].Closed = true; // the curve comes round to itself
+        touched[ca] = 1;
+        changed = true;
+        continue;
+      }
+      // chains[ca] ending at the junction, then chains[cb] from it.
+      std::vector<int> first = chains[ca].Ids, second = chains[cb].Ids;
+      if (ends[a].second)
+      {
+        std::reverse(first.begin(), first.end());
+      }
+      if (!ends[b].second)
+      {
+        std::reverse(second.begin(), second.end());
+      }
+      first.insert(first.end(), second.begin() + 1, second.end());
+      chains[ca].Ids = first;
+      chains[ca].Closed = false;
+      alive[cb] = 0;
+      touched[ca] = touched[cb] = 1;
+      changed = true;
+    }
+  }
+  std::vector<Chain> merged;
+  for (size_t c = 0; c < chains.size(); ++c)
+  {
+    if (alive[c])
+    {
+      merged.push_back(chains[c]);
+    }
+  }
+  // The chains that end on a merged curve's inner vertex: which curve, which end.
+  std::map<int, int> passesThrough; // vertex -> chain
+  for (size_t c = 0; c < merged.size(); ++c)
+  {
+    const size_t count = merged[c].Ids.size();
+    for (size_t k = 1; k + 1 < count; ++k)
+    {
+      passesThrough.emplace(merged[c].Ids[k], static_cast<int>(c));
+    }
+  }
+  through.assign(merged.size(), { -1, -1 });
+  for (size_t c = 0; c < merged.size(); ++c)
+  {
+    if (merged[c].Closed)
+    {
+      continue;
+    }
+    for (int e = 0; e < 2; ++e)
+    {
+      const auto found = passesThrough.find(e == 0 ? merged[c].Ids.front() : merged[c].Ids.back());
+      if (found != passesThrough.end() && found->second != static_cast<int>(c))
+      {
+        through[c][e] = found->second;
+      }
+    }
+  }
+  return merged;
 }
 
 V3 CurveRun::EndDirection(int end) const
@@ -1014,14 +1212,83 @@ V3 CurveRun::FitCrease(
     }
   }
   // c0 + a u0 = c1 + b u1
-  const double det = u[0][0] * (-u[1][1]) - u[0][1] * (-u[1][0]);
-  if (std::abs(det) < MinimumCreaseAngle)
+  auto intersect = [&](Eigen::Vector2d& p) {
+    const double det = u[0][0] * (-u[1][1]) - u[0][1] * (-u[1][0]);
+    if (std::abs(det) < MinimumCreaseAngle)
+    {
+      return false;
+    }
+    const Eigen::Vector2d r = c[1] - c[0];
+    const double a = (r[0] * (-u[1][1]) - r[1] * (-u[1][0])) / det;
+    p = c[0] + a * u[0];
+    return p.allFinite();
+  };
+  Eigen::Vector2d p;
+  if (!intersect(p))
   {
     return x;
   }
-  const Eigen::Vector2d r = c[1] - c[0];
-  const double a = (r[0] * (-u[1][1]) - r[1] * (-u[1][0])) / det;
-  const Eigen::Vector2d p = c[0] + a * u[0];
+  // Then as a hinge: each point to the face on its side of the bisector of the two half-lines
+  // from the crease. The nearest-line split takes the noise of one face near the crease for the
+  // other's, which tilts both lines towards each other and pulls the crease inside the bend.
+  for (int round = 0; round < 3; ++round)
+  {
+    Eigen::Vector2d h[2];
+    for (int g = 0; g < 2; ++g)
+    {
+      h[g] = (c[g] - p).dot(u[g]) >= 0.0 ? u[g] : Eigen::Vector2d(-u[g]);
+    }
+    const Eigen::Vector2d bisector = (h[0] + h[1]).normalized();
+    auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+      return a[0] * b[1] - a[1] * b[0];
+    };
+    const double side0 = cross(bisector, h[0]);
+    if (!bisector.allFinite() || side0 == 0.0)
+    {
+      break;
+    }
+    for (size_t k = 0; k < q.size(); ++k)
+    {
+      side[k] = (cross(bisector, q[k] - p) >= 0.0) == (side0 > 0.0) ? 0 : 1;
+    }
+    bool valid = true;
+    for (int g = 0; g < 2 && valid; ++g)
+    {
+      Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
+      Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+      int n = 0;
+      for (size_t k = 0; k < q.size(); ++k)
+      {
+        if (side[k] == g)
+        {
+          centroid += q[k];
+          ++n;
+        }
+      }
+      if (n < 5)
+      {
+        valid = false;
+        break;
+      }
+      centroid /= n;
+      for (size_t k = 0; k < q.size(); ++k)
+      {
+        if (side[k] == g)
+        {
+          m += (q[k] - centroid) * (q[k] - centroid).transpose();
+        }
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> line(m);
+      c[g] = centroid;
+      u[g] = line.eigenvectors().col(1);
+    }
+    Eigen::Vector2d moved;
+    if (!valid || !intersect(moved))
+    {
+      break;
+    }
+    p = moved;
+  }
   if (!p.allFinite() || p.norm() > 2.0 * this->S)
   {
     return x;
@@ -1400,8 +1667,16 @@ int vtkFeatureCurveExtraction::RequestData(
   }
 
   CurveRun run(s, this->FitRadius, this->StepLength, this->JoinDistance, this->MinimumLength);
+  // The detector's score (its active scalars) and threshold, when it gives them.
+  vtkDataArray* scores = input->GetPointData()->GetScalars();
+  vtkDataArray* thresholdArray = input->GetFieldData()->GetArray("FeatureThreshold");
+  const double threshold = thresholdArray && thresholdArray->GetNumberOfTuples() > 0
+    ? thresholdArray->GetTuple1(0)
+    : 0.0;
   run.SelectPoints(input, mask, input->GetPointData()->GetArray("FeatureType"),
-    input->GetPointData()->GetArray("Normals"));
+    input->GetPointData()->GetArray("Normals"),
+    scores && scores != mask && std::isfinite(threshold) && threshold > 0.0 ? scores : nullptr,
+    threshold);
   this->UpdateProgress(0.1);
   run.OrderSeeds();
   this->UpdateProgress(0.3);
@@ -1412,9 +1687,37 @@ int vtkFeatureCurveExtraction::RequestData(
   run.RemoveSpurs();
   run.CollapseShortLinks();
   run.RemoveSpurs();
+  run.RemoveUnsupported();
+  run.RemoveSpurs();
   run.SplitAtCorners();
-  const std::vector<Chain> chains = run.ExtractChains();
-  const std::vector<std::vector<V3>> curves = run.FitCurves(chains);
+  std::vector<std::array<int, 2>> through;
+  const std::vector<Chain> chains = run.MergeThrough(run.ExtractChains(), through);
+  std::vector<std::vector<V3>> curves = run.FitCurves(chains);
+  // An end on a curve that goes on through the junction: onto that curve's nearest vertex.
+  std::vector<std::array<std::pair<int, size_t>, 2>> endOn(
+    curves.size(), { std::make_pair(-1, size_t(0)), std::make_pair(-1, size_t(0)) });
+  for (size_t c = 0; c < curves.size(); ++c)
+  {
+    for (int e = 0; e < 2; ++e)
+    {
+      const int t = through[c][e];
+      if (t < 0)
+      {
+        continue;
+      }
+      V3& end = e == 0 ? curves[c].front() : curves[c].back();
+      size_t nearest = 0;
+      for (size_t k = 1; k < curves[t].size(); ++k)
+      {
+        if ((curves[t][k] - end).squaredNorm() < (curves[t][nearest] - end).squaredNorm())
+        {
+          nearest = k;
+        }
+      }
+      end = curves[t][nearest];
+      endOn[c][e] = std::make_pair(t, nearest);
+    }
+  }
   this->UpdateProgress(0.9);
 
   // Curves out, junctions shared: an end within a hundredth of a spacing of an earlier end is it.
@@ -1434,18 +1737,26 @@ int vtkFeatureCurveExtraction::RequestData(
   std::vector<V3> samples;
   std::vector<int> sampleCurve;
   std::vector<V3> tangentValues;
+  // The point ids of each curve's vertices; ends on another curve's inner vertex are resolved
+  // once every curve has its ids.
+  std::vector<std::vector<vtkIdType>> vertexIds(curves.size());
   for (size_t c = 0; c < curves.size(); ++c)
   {
     const std::vector<V3>& x = curves[c];
     const bool closed = chains[c].Closed;
-    std::vector<vtkIdType> ids;
+    std::vector<vtkIdType>& ids = vertexIds[c];
     for (size_t k = 0; k < x.size(); ++k)
     {
+      const bool end = k == 0 || k + 1 == x.size();
       if (closed && k + 1 == x.size())
       {
         ids.push_back(ids.front());
       }
-      else if (k == 0 || k + 1 == x.size())
+      else if (end && endOn[c][k == 0 ? 0 : 1].first >= 0)
+      {
+        ids.push_back(-1);
+      }
+      else if (end)
       {
         ids.push_back(endPoint(x[k]));
       }
@@ -1453,7 +1764,34 @@ int vtkFeatureCurveExtraction::RequestData(
       {
         ids.push_back(linePoints->InsertNextPoint(x[k].data()));
       }
-      samples.push_back(V3(linePoints->GetPoint(ids.back())));
+    }
+  }
+  for (size_t round = 0; round <= curves.size(); ++round) // an end may land on another's end
+  {
+    for (size_t c = 0; c < curves.size(); ++c)
+    {
+      for (int e = 0; e < 2; ++e)
+      {
+        const auto& on = endOn[c][e];
+        vtkIdType& id = e == 0 ? vertexIds[c].front() : vertexIds[c].back();
+        if (on.first >= 0 && id < 0)
+        {
+          id = vertexIds[on.first][on.second];
+          if (id < 0 && round == curves.size())
+          {
+            id = endPoint(e == 0 ? curves[c].front() : curves[c].back());
+          }
+        }
+      }
+    }
+  }
+  for (size_t c = 0; c < curves.size(); ++c)
+  {
+    const std::vector<V3>& x = curves[c];
+    const std::vector<vtkIdType>& ids = vertexIds[c];
+    for (size_t k = 0; k < x.size(); ++k)
+    {
+      samples.push_back(V3(linePoints->GetPoint(ids[k])));
       sampleCurve.push_back(static_cast<int>(c));
     }
     for (size_t k = 0; k < x.size(); ++k)

@@ -26,12 +26,20 @@
  *    Curves shorter than JoinDistance between two junctions (a corner traced round as well as
  *    along its edges) collapse into one corner.
  * 3. Cleaning. Branches shorter than MinimumLength s that end freely (spurs), and pieces shorter
- *    than that, are removed; curves are split where they turn by more than 45 degrees within
- *    about 3 s (a corner that a trace went round).
+ *    than that, are removed, and pieces on their own shorter than 2 FitRadius s (no longer than
+ *    one line fit's window); so are free branches shorter than 2 FitRadius s whose
+ *    feature points are mostly (3 in 4) unsupported: scored below half the detector's threshold
+ *    (the input's active scalars and its `FeatureThreshold` field; border points count as
+ *    supported), points that a rule other than the vote marked (clean clouds' unexplained fits
+ *    beside a crease). Curves are split where they turn by more than 45 degrees within about
+ *    3 s (a corner that a trace went round); two curves that meet at a junction and go on within
+ *    30 degrees of straight (over 2 FitRadius s) are one curve, the others there end on its vertex.
  * 4. Fitting. Each vertex is moved onto the feature as the cloud around it defines it: across a
  *    crease, to the intersection of the two faces' lines fitted to the cross-section of all points
  *    within 1.5 FitRadius s (and 0.75 FitRadius s along the curve), the faces told apart by their
- *    normals, then as k-means with lines; on a border, to the edge of the one face (the points' distribution across
+ *    normals, then as k-means with lines, then as a hinge (each point to the face on its side of
+ *    the bisector from the crease: the nearest-line split takes one face's noise for the other's
+ *    and pulls the crease inside the bend); on a border, to the edge of the one face (the points' distribution across
  *    the edge tells where it lies). Then the vertices are smoothed along the curve (ends fixed) and
  *    resampled StepLength s apart.
  *

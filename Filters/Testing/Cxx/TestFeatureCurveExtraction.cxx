@@ -1,23 +1,29 @@
 // vtkFeatureCurveExtraction: on generated parts, the curves are as many as the true ones, meet at
 // the corners, close on circles, lie near the exact curves; the point output's CurveId agrees
-// with the lines; bad input gives an error, not a crash.
+// with the lines; a branch of unvoted points is removed, a curve goes on through a T junction;
+// bad input gives an error, not a crash.
 #include "FeaturePointsTestRun.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkCreaseVotingFeatures.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFeatureCurveExtraction.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
+#include "vtkPointData.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <array>
 #include <map>
 #include <memory>
+#include <random>
 #include <vector>
 
 namespace
@@ -217,6 +223,41 @@ double CurveIdAgreement(vtkPolyData* points, vtkPolyData* lines, double s, vtkId
   }
   return labelled ? static_cast<double>(agree) / labelled : 0.0;
 }
+
+// A flat jittered grid (spacing 1) whose feature points are a band along x (|y| <= 1, score 1)
+// and a branch across it (|x| <= 1, 1 < y <= 7.5) with the given score; the detector's threshold
+// 0.5 in the field data, the score as the active scalars, as a detector gives them.
+vtkSmartPointer<vtkPolyData> TeeJunction(double branchScore)
+{
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkUnsignedCharArray> mask;
+  mask->SetName("FeatureMask");
+  vtkNew<vtkFloatArray> score;
+  score->SetName("CreaseVotes");
+  for (int j = -20; j <= 20; ++j)
+  {
+    for (int i = -40; i <= 40; ++i)
+    {
+      const double x = i + jitter(random), y = j + jitter(random);
+      const bool band = std::abs(y) <= 1.0 && std::abs(x) <= 30.0;
+      const bool branch = std::abs(x) <= 1.0 && y > 1.0 && y <= 7.5;
+      points->InsertNextPoint(x, y, 0.0);
+      mask->InsertNextValue(band || branch ? 1 : 0);
+      score->InsertNextValue(band ? 1.0f : branch ? static_cast<float>(branchScore) : 0.0f);
+    }
+  }
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
+  cloud->GetPointData()->AddArray(mask);
+  cloud->GetPointData()->SetScalars(score);
+  vtkNew<vtkDoubleArray> threshold;
+  threshold->SetName("FeatureThreshold");
+  threshold->InsertNextValue(0.5);
+  cloud->GetFieldData()->AddArray(threshold);
+  return cloud;
+}
 } // namespace
 
 int TestFeatureCurveExtraction(int, char*[])
@@ -314,6 +355,37 @@ int TestFeatureCurveExtraction(int, char*[])
     Expect(coveredCount >= 74, "two planes: crease covered, of 80 hundredths", coveredCount);
     Expect(count > 0 && sum / count / s <= 0.5, "two planes: mean distance to the crease, s",
       count > 0 ? sum / count / s : -1);
+  }
+  // A T junction: a branch of points nobody voted for is removed; a voted one stays, the band
+  // stays one curve through the junction and the branch ends on one of its vertices.
+  for (const double branchScore : { 0.0, 1.0 })
+  {
+    vtkNew<vtkFeatureCurveExtraction> curves;
+    curves->SetInputData(TeeJunction(branchScore));
+    curves->Update();
+    vtkPolyData* lines = curves->GetCurves();
+    const vtkIdType expected = branchScore > 0.0 ? 2 : 1;
+    Expect(lines->GetNumberOfCells() == expected,
+      branchScore > 0.0 ? "T, voted branch: curves (2)" : "T, unvoted branch: curves (1)",
+      lines->GetNumberOfCells());
+    if (lines->GetNumberOfCells() == 2)
+    {
+      vtkNew<vtkIdList> first, second;
+      lines->GetCellPoints(0, first);
+      lines->GetCellPoints(1, second);
+      const bool firstLonger = first->GetNumberOfIds() >= second->GetNumberOfIds();
+      vtkIdList* band = firstLonger ? first.Get() : second.Get();
+      vtkIdList* branch = firstLonger ? second.Get() : first.Get();
+      int shared = 0;
+      for (const vtkIdType end : { branch->GetId(0), branch->GetId(branch->GetNumberOfIds() - 1) })
+      {
+        for (vtkIdType k = 1; k + 1 < band->GetNumberOfIds(); ++k)
+        {
+          shared += band->GetId(k) == end;
+        }
+      }
+      Expect(shared == 1, "T: branch ends on an inner vertex of the band's curve (1)", shared);
+    }
   }
   // Bad input: no FeatureMask (an error, no crash, no curve); no points (no curve).
   {

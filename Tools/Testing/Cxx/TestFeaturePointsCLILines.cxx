@@ -67,6 +67,12 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const std::string program = argv[1], folder = argv[2];
+  // The folder and its parent (this test may run before the one that makes the parent).
+  const size_t slash = folder.find_last_of('/');
+  if (slash != std::string::npos && slash > 0)
+  {
+    ::mkdir(folder.substr(0, slash).c_str(), 0755);
+  }
   ::mkdir(folder.c_str(), 0755);
   vtkNew<vtkFeatureModelSource> box;
   box->SetModel(vtkFeatureModelSource::BOX);

@@ -1,8 +1,9 @@
-"""Examples/Python/FeaturePointsExample.py (the README's Python script) runs and renders.
+"""Examples/Python/FeaturePointsExample.py (the README's Python script) and
+Examples/Python/FeatureCurvesPicture.py (the README's picture of the curves) run and render.
 
 Run by CTest (FeaturePoints::PythonExample) under xvfb-run where there is no display, with
-FEATUREPOINTS_EXAMPLE (the script), FEATUREPOINTS_DATA and FEATUREPOINTS_README in the
-environment.
+FEATUREPOINTS_EXAMPLE and FEATUREPOINTS_CURVES_EXAMPLE (the scripts), FEATUREPOINTS_DATA and
+FEATUREPOINTS_README in the environment.
 """
 import os
 import subprocess
@@ -48,3 +49,21 @@ def test_example_reads_detects_writes_and_renders(tmp_path):
     blue = np.count_nonzero((rgb[:, 2] > 150) & (rgb[:, 0] < 80) & (rgb[:, 1] < 80))
     # Feature points in red, the others in blue, on white: both are drawn, and far more blue.
     assert red > 200 and blue > 3 * red, (red, blue)
+
+
+def test_curves_picture_renders_the_curves(tmp_path):
+    # Examples/Python/FeatureCurvesPicture.py (the README's picture of the curves) on a small box.
+    picture = str(tmp_path / "curves.png")
+    done = subprocess.run([sys.executable, os.environ["FEATUREPOINTS_CURVES_EXAMPLE"], picture,
+                           "Box", "10000"], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith("12 curves, total length "), done.stdout
+    png = vtkPNGReader()
+    png.SetFileName(picture)
+    png.Update()
+    image = png.GetOutput()
+    assert image.GetDimensions()[:2] == (720, 540)
+    rgb = vtk_to_numpy(image.GetPointData().GetScalars())[:, :3].astype(int)
+    # The curves in colour over a grey cloud on white: many pixels far from any grey.
+    coloured = np.count_nonzero(rgb.max(axis=1) - rgb.min(axis=1) > 80)
+    assert coloured > 2000, coloured
