@@ -612,6 +612,31 @@ bool Finite(const double x[3])
 {
   return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
 }
+// Every process's `local` values, concatenated in process order, on every process; `lengths` and
+// `offsets` receive where each process's values lie.
+std::vector<double> AllGatherValues(vtkMultiProcessController* controller,
+  std::vector<double>& local, std::vector<vtkIdType>& lengths, std::vector<vtkIdType>& offsets)
+{
+  const int nProcs = controller->GetNumberOfProcesses();
+  long long size = static_cast<long long>(local.size());
+  std::vector<long long> sizes(nProcs, 0);
+  controller->AllGather(&size, sizes.data(), 1);
+  lengths.assign(nProcs, 0);
+  offsets.assign(nProcs, 0);
+  vtkIdType total = 0;
+  for (int q = 0; q < nProcs; ++q)
+  {
+    lengths[q] = static_cast<vtkIdType>(sizes[q]);
+    offsets[q] = total;
+    total += lengths[q];
+  }
+  std::vector<double> all(std::max<vtkIdType>(total, 1));
+  controller->AllGatherV(
+    local.data(), all.data(), static_cast<vtkIdType>(local.size()), lengths.data(), offsets.data());
+  all.resize(static_cast<size_t>(total));
+  return all;
+}
+
 } // namespace
 
 vtkDistributedFeaturePoints::vtkDistributedFeaturePoints()
@@ -750,21 +775,9 @@ int vtkDistributedFeaturePoints::RequestData(
         }
       }
     }
-    long long sampleSize = static_cast<long long>(local.size());
-    std::vector<long long> sampleSizes(nProcs, 0);
-    controller->AllGather(&sampleSize, sampleSizes.data(), 1);
-    std::vector<vtkIdType> lengths(nProcs), offsets(nProcs, 0);
-    vtkIdType sampleTotal = 0;
-    for (int q = 0; q < nProcs; ++q)
-    {
-      lengths[q] = static_cast<vtkIdType>(sampleSizes[q]);
-      offsets[q] = sampleTotal;
-      sampleTotal += lengths[q];
-    }
-    std::vector<double> sample(std::max<vtkIdType>(sampleTotal, 1));
-    controller->AllGatherV(local.data(), sample.data(), static_cast<vtkIdType>(local.size()),
-      lengths.data(), offsets.data());
-    std::vector<vtkIdType> ids(sampleTotal / 3);
+    std::vector<vtkIdType> lengths, offsets;
+    std::vector<double> sample = AllGatherValues(controller, local, lengths, offsets);
+    std::vector<vtkIdType> ids(sample.size() / 3);
     std::iota(ids.begin(), ids.end(), 0);
     BuildSplit(nodes, sample, ids, 0, ids.size(), 0, nProcs);
 
@@ -945,20 +958,8 @@ int vtkDistributedFeaturePoints::RequestData(
       }
     }
   }
-  long long boxCount = static_cast<long long>(boxes.size());
-  std::vector<long long> boxCounts(nProcs, 0);
-  controller->AllGather(&boxCount, boxCounts.data(), 1);
-  std::vector<vtkIdType> lengths(nProcs), offsets(nProcs, 0);
-  vtkIdType boxTotal = 0;
-  for (int q = 0; q < nProcs; ++q)
-  {
-    lengths[q] = static_cast<vtkIdType>(boxCounts[q]);
-    offsets[q] = boxTotal;
-    boxTotal += lengths[q];
-  }
-  std::vector<double> allBoxes(std::max<vtkIdType>(boxTotal, 1));
-  controller->AllGatherV(boxes.data(), allBoxes.data(), static_cast<vtkIdType>(boxes.size()),
-    lengths.data(), offsets.data());
+  std::vector<vtkIdType> lengths, offsets;
+  const std::vector<double> allBoxes = AllGatherValues(controller, boxes, lengths, offsets);
 
   // 4. The halo: each own point that falls in another process's boxes goes to it.
   std::vector<std::vector<vtkIdType>> send(nProcs);
