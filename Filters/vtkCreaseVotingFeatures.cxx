@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 vtkStandardNewMacro(vtkCreaseVotingFeatures);
@@ -48,6 +49,14 @@ inline double MisfitBound(int dof)
 // pure Gaussian noise puts its planes 2.7 RMS apart.
 const double SheetCosine = std::cos(10.0 * 3.14159265358979323846 / 180.0);
 constexpr double SheetSeparation = 4.0;
+// The nearest-plane fit stands for two surfaces crossing (four half-planes at the line) only where
+// each of its planes holds at least CrossingShare of the neighbourhood on either side of the line,
+// counting only points more than CrossingSigmas noise widths from the other plane: points that the
+// noise cannot have handed to the nearer plane. Elsewhere the nearest-plane assignment fits the
+// noise itself (two planes a noise width apart above and below a face leave about a third of its
+// residual) and would "explain" any neighbourhood.
+constexpr double CrossingShare = 0.05;
+constexpr double CrossingSigmas = 3.0;
 // Links of the one-sheet neighbourhoods: each point to its 5 nearest. On a randomly sampled
 // surface these reach about 2.5 mean spacings: walls thicker than about 5 spacings keep their
 // sides apart (4 links split noisy single sheets; 6 join the walls of PCEDNet's abc/7010).
@@ -239,6 +248,7 @@ struct CreaseFit
   CreaseLine Cross;  // two whole planes, points split by the nearer plane
   int Points = 0;    // points fitted
   int Sheet = -1;    // two parallel sheets (a thin wall): the fitted point's sheet (0, 1)
+  bool Crossing = false; // the nearest planes cross within the neighbourhood (see CrossingShare)
   bool Explained = true; // a quadric or the hinge explains the points within the noise
 };
 
@@ -281,9 +291,91 @@ void StoreLine(CreaseLine& line, double rss2, double sine, bool hasLine, const E
   }
 }
 
-// Two-plane fit of one neighbourhood: p[0] is the point (the origin), nr the normals.
+// Whether the nearest planes (ca, na), (cb, nb), meeting on the line (x, t), cross: each holds
+// points on both sides of the line beyond the noise of the other plane (see CrossingShare).
+bool Crosses(const std::vector<Eigen::Vector3d>& p, const std::vector<unsigned char>& label,
+  const Eigen::Vector3d& ca, const Eigen::Vector3d& na, const Eigen::Vector3d& cb,
+  const Eigen::Vector3d& nb, const Eigen::Vector3d& x, const Eigen::Vector3d& t, double variance)
+{
+  int sides[2][2] = { { 0, 0 }, { 0, 0 } };
+  const Eigen::Vector3d along[2] = { na.cross(t), nb.cross(t) };
+  const double oa = ca.dot(na), ob = cb.dot(nb);
+  const double beyond = CrossingSigmas * CrossingSigmas * variance;
+  for (size_t j = 0; j < p.size(); ++j)
+  {
+    const int k = label[j];
+    const double other = k == 0 ? p[j].dot(nb) - ob : p[j].dot(na) - oa;
+    if (other * other > beyond)
+    {
+      ++sides[k][(p[j] - x).dot(along[k]) >= 0.0 ? 0 : 1];
+    }
+  }
+  const double least = CrossingShare * static_cast<double>(p.size());
+  return std::min(std::min(sides[0][0], sides[0][1]), std::min(sides[1][0], sides[1][1])) >= least;
+}
+
+// Moments of the points on each side of the plane through x with normal `across`.
+void SplitMoments(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& x,
+  const Eigen::Vector3d& across, Moments half[2])
+{
+  half[0] = Moments();
+  half[1] = Moments();
+  for (const Eigen::Vector3d& q : p)
+  {
+    half[(q - x).dot(across) >= 0.0 ? 0 : 1].Add(q);
+  }
+}
+
+// A hinge: the planes of two halves of the points and the line where they meet.
+struct Hinge
+{
+  Eigen::Vector3d A, NA, B, NB, X, T;
+  double Sine = 0.0;
+  double RSS = -1.0; // negative: no hinge formed
+};
+
+// The hinge refined from a first partition `half`: the planes of both halves, their line, and
+// the points split again by the bisector through the line that separates the two faces (normal
+// na - nb, both normals turned to `up`), SideRounds times. Splitting by position across the line
+// and never by height keeps the fit off the noise: a split into the points above and below a face
+// would gain a share of the noise. Where a split leaves a side too few points for a plane, the
+// last hinge stands; where the planes turn parallel, no hinge forms (RSS negative).
+Hinge RefineHinge(const std::vector<Eigen::Vector3d>& p, Moments half[2], const Eigen::Vector3d& up)
+{
+  Hinge best, h;
+  for (int round = 0; round <= SideRounds; ++round)
+  {
+    double qa = 0.0, qb = 0.0;
+    if (!FitPlane(half[0], h.A, h.NA, qa) || !FitPlane(half[1], h.B, h.NB, qb))
+    {
+      break;
+    }
+    h.NA = h.NA.dot(up) < 0.0 ? Eigen::Vector3d(-h.NA) : h.NA;
+    h.NB = h.NB.dot(up) < 0.0 ? Eigen::Vector3d(-h.NB) : h.NB;
+    if (!MeetingLine(h.A, h.NA, h.B, h.NB, h.X, h.T, h.Sine))
+    {
+      return Hinge();
+    }
+    h.RSS = qa + qb;
+    best = h;
+    if (round == SideRounds)
+    {
+      break;
+    }
+    Eigen::Vector3d across = h.NA - h.NB;
+    if ((h.A - h.X).dot(across) < 0.0)
+    {
+      across = -across; // face a's side is where its centroid lies
+    }
+    SplitMoments(p, h.X, across, half);
+  }
+  return best;
+}
+
+// Two-plane fit of one neighbourhood: p[0] is the point (the origin), nr the normals, variance
+// the noise variance.
 CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& nr,
-  std::vector<unsigned char>& label, std::vector<unsigned char>& next)
+  double variance, std::vector<unsigned char>& label, std::vector<unsigned char>& next)
 {
   CreaseFit fit;
   fit.Points = static_cast<int>(p.size());
@@ -381,34 +473,51 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   double sine = 0.0;
   bool hasLine = MeetingLine(ca, na, cb, nb, x, t, sine);
   StoreLine(fit.Cross, rss2, sine, hasLine, x, t, ca, cb, nr[0]);
+  fit.Crossing = hasLine && Crosses(p, label, ca, na, cb, nb, x, t, variance);
   // The nearest-plane assignment fits noise too: each point picks the plane nearer to it, so on a
   // flat noisy patch two planes "gain" a large share of the residual, and a shallow crease hides
-  // in that. The hinge model is fitted on a partition by position instead: each point goes to the
-  // side of the crease line it lies on, each side gets its plane, and the line is refitted from
-  // these planes, a few rounds. On pure noise it gains what a hinge gains by chance (a few
-  // sigma^2); on a crease of any angle it keeps the whole bend. Where surfaces cross (four
-  // half-planes at the line) it cannot fit, and the caller falls back to the crossing planes.
-  for (int round = 0; hasLine && round < SideRounds; ++round)
+  // in that. The hinge model is fitted on a partition by position instead (RefineHinge), from two
+  // starts: the nearest-plane halves, and a cut through the centroid across the direction in
+  // which the normals vary. The lower residual wins. On pure noise it gains what a hinge gains by
+  // chance (a few sigma^2); on a crease of any angle it keeps the whole bend. Where surfaces cross
+  // (four half-planes at the line) it cannot fit, and the caller falls back on the crossing
+  // planes.
+  Moments half[2];
+  for (size_t j = 0; j < m; ++j)
   {
-    // Normal of the plane through the line that separates the two sides' centroids.
-    Eigen::Vector3d across = ca - cb;
-    across -= across.dot(t) * t;
-    if (!(across.squaredNorm() > 0.0))
-    {
-      break;
-    }
-    Moments half[2];
-    for (size_t j = 0; j < m; ++j)
-    {
-      half[(p[j] - x).dot(across) >= 0.0 ? 0 : 1].Add(p[j]);
-    }
-    double qa = 0.0, qb = 0.0;
-    if (!FitPlane(half[0], ca, na, qa) || !FitPlane(half[1], cb, nb, qb))
-    {
-      break;
-    }
-    rss2 = qa + qb;
-    hasLine = MeetingLine(ca, na, cb, nb, x, t, sine);
+    half[label[j]].Add(p[j]);
+  }
+  const Hinge fromPlanes = RefineHinge(p, half, n1);
+  Hinge fromCut;
+  const Eigen::Vector3d cut = e - e.dot(n1) * n1;
+  if (cut.squaredNorm() > 0.0)
+  {
+    SplitMoments(p, c1, cut, half);
+    fromCut = RefineHinge(p, half, n1);
+  }
+  const Hinge& h = fromCut.RSS >= 0.0 && (fromPlanes.RSS < 0.0 || fromCut.RSS < fromPlanes.RSS)
+    ? fromCut
+    : fromPlanes;
+  // A line outside the neighbourhood (beyond its farthest point) is no crease of it: two nearly
+  // parallel planes through the noise.
+  double reach = 0.0;
+  for (const Eigen::Vector3d& q : p)
+  {
+    reach = std::max(reach, q.squaredNorm());
+  }
+  hasLine = h.RSS >= 0.0 && h.X.squaredNorm() <= reach;
+  if (hasLine)
+  {
+    rss2 = h.RSS;
+    ca = h.A;
+    cb = h.B;
+    x = h.X;
+    t = h.T;
+    sine = h.Sine;
+  }
+  else
+  {
+    rss2 = rss1;
   }
   StoreLine(fit.Hinge, rss2, sine, hasLine, x, t, ca, cb, nr[0]);
   return fit;
@@ -721,9 +830,9 @@ void CreaseRun::GatherSheet(vtkIdType r, int count, const float* normal, Scratch
 
 // Two-plane fit of the gathered points; where they form two parallel sheets (a thin wall), the
 // fit is redone on the fitted point's sheet.
-CreaseFit FitGathered(Scratch& s)
+CreaseFit FitGathered(Scratch& s, double variance)
 {
-  CreaseFit fit = FitCrease(s.P, s.N, s.Label, s.Next);
+  CreaseFit fit = FitCrease(s.P, s.N, variance, s.Label, s.Next);
   if (fit.Sheet >= 0)
   {
     const unsigned char side = static_cast<unsigned char>(fit.Sheet);
@@ -739,7 +848,7 @@ CreaseFit FitGathered(Scratch& s)
     }
     s.P.resize(kept);
     s.N.resize(kept);
-    fit = FitCrease(s.P, s.N, s.Label, s.Next);
+    fit = FitCrease(s.P, s.N, variance, s.Label, s.Next);
     fit.Sheet = -1;
   }
   return fit;
@@ -766,7 +875,7 @@ void CreaseRun::FitCreases(const float* normal)
         std::fill(sheet, sheet + this->Words, ~uint64_t(0));
       }
       this->GatherSheet(r, this->KFit, normal, s);
-      this->Fits[r] = FitGathered(s);
+      this->Fits[r] = FitGathered(s, this->Variance);
     }
   });
 }
@@ -775,7 +884,8 @@ void CreaseRun::FitCreases(const float* normal)
 // noise.
 inline bool Explains(const CreaseFit& f, double variance)
 {
-  return std::min(std::min(f.RSSQ, f.Hinge.RSS2), f.Cross.RSS2) <=
+  const double crossing = f.Crossing ? f.Cross.RSS2 : std::numeric_limits<double>::infinity();
+  return std::min(std::min(f.RSSQ, f.Hinge.RSS2), crossing) <=
     MisfitBound(f.Points - 6) * variance;
 }
 
@@ -811,7 +921,7 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
            scale = scale > smallest ? std::max(scale / 2, smallest) : 0)
       {
         this->GatherSheet(r, scale, normal, s);
-        fit = FitGathered(s);
+        fit = FitGathered(s, this->Variance);
         if (Explains(fit, this->Variance))
         {
           this->Fits[r] = fit;
@@ -857,7 +967,7 @@ void CreaseRun::ChooseModels(float* gain, float* angle)
   {
     CreaseFit& f = this->Fits[r];
     f.Explained = Explains(f, this->Variance);
-    if (f.Hinge.RSS2 > MisfitBound(f.Points - 6) * this->Variance &&
+    if (f.Crossing && f.Hinge.RSS2 > MisfitBound(f.Points - 6) * this->Variance &&
       f.Cross.RSS2 < f.Hinge.RSS2)
     {
       f.Hinge = f.Cross;

@@ -19,14 +19,20 @@
  *    the NormalNeighbors nearest, as Eq. 3 of the paper) vary most; then, as in k-means with
  *    planes, each side gets its least-squares plane and every point goes to the nearer plane,
  *    until the split no longer changes (at most 8 rounds). These are the "crossing" planes.
- *    Then the hinge: every point goes to the side of the crossing planes' line it lies on, each
- *    side gets its plane, and the line is refitted from them (3 rounds). The nearest-plane split
- *    fits noise (each point picks the plane nearer to it, so on a flat noisy patch two planes
- *    "gain" a large share of the residual, and a 15-degree crease hides in that); a split by
- *    position gains only what a hinge gains by chance. Where the hinge leaves more than twice
- *    the noise variance per degree of freedom (surfaces crossing, corners), the crossing planes
- *    are kept instead. Where the crossing planes come out parallel and several noise widths
- *    apart (two sheets the links did not separate), the fit is redone on P_i's sheet.
+ *    Then the hinge, fitted on a split by position: each side of a line gets its plane, the
+ *    line is refitted where the planes meet, and the points are split again by the bisector
+ *    through it that separates the two faces (3 rounds), from two starts (the crossing planes'
+ *    halves, and a cut through the centroid across the direction in which the normals vary);
+ *    the lower residual wins. A hinge whose line passes outside the neighbourhood is none.
+ *    The nearest-plane split fits noise (each point picks the plane nearer to it: two planes a
+ *    noise width above and below a flat patch leave about a third of its residual, and a
+ *    45-degree crease under noise hides in that); a split by position across the line gains
+ *    only what a hinge gains by chance. The crossing planes count as a model only where they
+ *    cross within the neighbourhood: each holds 5 % of the points on either side of the line
+ *    farther than 3 sigma from the other plane. There (surfaces crossing), where the hinge
+ *    leaves more than the noise explains, the crossing planes are kept instead. Where the
+ *    crossing planes come out parallel and several noise widths apart (two sheets the links
+ *    did not separate), the fit is redone on P_i's sheet.
  * 2. Crease gain G_i = (RSS_Q - RSS_2) / sigma^2: how much better the two planes fit than one
  *    smooth quadric height field over the one-plane fit (RSS: sums of squared distances), in
  *    units of the cloud's noise variance sigma^2. A cylinder or a sphere is explained by the
