@@ -1,7 +1,8 @@
 // vtkFeatureCurveExtraction: on generated parts, the curves are as many as the true ones, meet at
 // the corners, close on circles, lie near the exact curves; the point output's CurveId agrees
-// with the lines; a branch of unvoted points is removed, a curve goes on through a T junction;
-// bad input gives an error, not a crash.
+// with the lines; a branch of unvoted points is removed, a curve goes on through a T junction; a
+// gap along a shallow crease is bridged, the same gap on a flat sheet is not; bad input gives an
+// error, not a crash.
 #include "FeaturePointsTestRun.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
