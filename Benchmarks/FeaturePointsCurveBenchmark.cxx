@@ -495,11 +495,15 @@ int main(int argc, char* argv[])
   {
     return Failures ? EXIT_FAILURE : EXIT_SUCCESS;
   }
-  std::printf("\nall rows: F1 lowest %.3f, median %.3f; lines / true highest %.2f, median %.2f; "
-              "dist at sigma 0.5 s highest %.2f, median %.2f\n",
+  std::printf("\nall rows: F1 lowest %.3f, median %.3f; lines / true highest %.2f, median %.2f",
     *std::min_element(f1s.begin(), f1s.end()), Median(f1s),
-    *std::max_element(perCurve.begin(), perCurve.end()), Median(perCurve),
-    *std::max_element(distances.begin(), distances.end()), Median(distances));
+    *std::max_element(perCurve.begin(), perCurve.end()), Median(perCurve));
+  if (!distances.empty()) // none when --only picks no row at sigma 0.5 s
+  {
+    std::printf("; dist at sigma 0.5 s highest %.2f, median %.2f",
+      *std::max_element(distances.begin(), distances.end()), Median(distances));
+  }
+  std::printf("\n");
   if (CheckFigures)
   {
     std::printf("\n%s: %d figure(s) past their floor\n", Failures ? "FAILED" : "passed", Failures);
