@@ -9,8 +9,9 @@
 // sheets (Model III's cylinder a tube): their cut edges are borders of the cloud, not features,
 // so the region within 5 s of a cut is not scored (as in FeaturePointsQualityBenchmark).
 // With --check, figures are compared with floors (a little beyond the worst measured at --scale 0.1
-// and 0.3 when they were set): every part at sigma = 0.5 s, and the clean parts with features
-// denser and the plate 1 s thick held to the targets; the program fails when quality is lost.
+// and 0.3 when they were set): every part at sigma = 0.5 s and clean, and the clean parts with
+// features denser and the plate 1 s thick held to the targets; the program fails when quality is
+// lost.
 #include "FeaturePointsBenchmarkFigures.h"
 
 #include "vtkCellArray.h"
@@ -292,7 +293,8 @@ void PrintRow(const std::string& name, const Case& c, const Scores& r, double se
 }
 
 // The rows besides sigma = 0.5 s that meet the targets: the clean parts with features denser, and
-// the plate 1 s thick. The clean uniform parts and the other real-part rows are printed only.
+// the plate 1 s thick. The clean uniform parts have floors of their own; the other real-part rows
+// are printed only.
 bool HeldToTargets(const Case& c)
 {
   if (c.Noise == 0.0)
@@ -405,19 +407,26 @@ int main(int argc, char* argv[])
       {
         distances.push_back(r.MeanDistance);
         // The parts at sigma = 0.5 s: floors a little beyond the worst row measured at --scale
-        // 0.1 and 0.3 and at 200,000 points (F1 0.915, 1.71 lines per true curve, 0.54 s). At
+        // 0.1 and 0.3 and at 200,000 points (F1 0.914, 1.67 lines per true curve, 0.54 s). At
         // 200,000 points, pieces of the sheets' cut-edge borders lie within the scored region
-        // (5 s is narrower there than the border curves' wander): up to 3.29 lines per true curve.
+        // (5 s is narrower there than the border curves' wander): up to 2.33 lines per true curve.
         Floor(row + " F1", r.F1, 0.90);
-        Ceiling(row + " lines per true curve", r.PerCurve, entry.second.Points > 100000 ? 3.6 : 1.9);
+        Ceiling(row + " lines per true curve", r.PerCurve, entry.second.Points > 100000 ? 2.7 : 1.9);
         Ceiling(row + " mean distance (s)", r.MeanDistance, 0.6);
       }
       else if (HeldToTargets(entry.second))
       {
-        // Rows that meet the targets at --scale 0.1 and 0.3 (worst: F1 0.971, 1.08 lines per
+        // Rows that meet the targets at --scale 0.1 and 0.3 (worst: F1 0.977, 1.08 lines per
         // true curve) are held to them.
         Floor(row + " F1", r.F1, 0.95);
         Ceiling(row + " lines per true curve", r.PerCurve, 1.2);
+      }
+      else if (entry.second.Noise == 0.0)
+      {
+        // The clean uniform parts: the detector's false points beside the creases still break
+        // some curves (worst at --scale 0.1 and 0.3: F1 0.975, 1.71 lines per true curve).
+        Floor(row + " F1", r.F1, 0.95);
+        Ceiling(row + " lines per true curve", r.PerCurve, 1.9);
       }
     }
   };
@@ -486,11 +495,15 @@ int main(int argc, char* argv[])
   {
     return Failures ? EXIT_FAILURE : EXIT_SUCCESS;
   }
-  std::printf("\nall rows: F1 lowest %.3f, median %.3f; lines / true highest %.2f, median %.2f; "
-              "dist at sigma 0.5 s highest %.2f, median %.2f\n",
+  std::printf("\nall rows: F1 lowest %.3f, median %.3f; lines / true highest %.2f, median %.2f",
     *std::min_element(f1s.begin(), f1s.end()), Median(f1s),
-    *std::max_element(perCurve.begin(), perCurve.end()), Median(perCurve),
-    *std::max_element(distances.begin(), distances.end()), Median(distances));
+    *std::max_element(perCurve.begin(), perCurve.end()), Median(perCurve));
+  if (!distances.empty()) // none when --only picks no row at sigma 0.5 s
+  {
+    std::printf("; dist at sigma 0.5 s highest %.2f, median %.2f",
+      *std::max_element(distances.begin(), distances.end()), Median(distances));
+  }
+  std::printf("\n");
   if (CheckFigures)
   {
     std::printf("\n%s: %d figure(s) past their floor\n", Failures ? "FAILED" : "passed", Failures);

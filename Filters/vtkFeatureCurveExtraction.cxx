@@ -62,6 +62,9 @@ const double MinimumCreaseAngle = std::sin(vtkMath::RadiansFromDegrees(10.0)); /
 constexpr double SupportShare = 0.5;
 constexpr double MinimumSupport = 0.25; // share of supported points a free branch needs
 const double ThroughCone = std::cos(vtkMath::RadiansFromDegrees(150.0)); // a curve goes on through a junction
+// Two faces' slopes further apart than this many standard errors (from the faces' own residuals,
+// the cloud's noise) are a bend, not noise.
+constexpr double CreaseSignificance = 3.0;
 
 enum Types
 {
@@ -301,6 +304,9 @@ public:
   void RemoveSpurs();
   // Free branches and pieces made of points nobody voted for.
   void RemoveUnsupported();
+  // Gaps in the feature points along a crease: two free ends that point at each other are
+  // bridged where the cloud's cross-section shows the crease at every step between them.
+  void BridgeAlongCreases();
   // Curves that go straight on through a junction are one curve; `through` gets, per chain end,
   // the chain on whose inner vertex it ends (-1: none).
   std::vector<Chain> MergeThrough(std::vector<Chain> chains,
@@ -334,7 +340,21 @@ private:
   V3 EndDirection(int end) const;
   std::vector<int> Components() const;
   V3 FitSection(const V3& x, const V3& t) const;
-  V3 FitCrease(const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids) const;
+  // The slab of all points about x across the curve's tangent t, and the frame across it.
+  void Section(const V3& x, const V3& t, double halfLength, std::vector<vtkIdType>& ids, V3& e1,
+    V3& e2) const;
+  // How the cross-section bends at x, over a slab halfLength either side along t: two faces
+  // hinged at x (the line of the section's plane u, fitted unless `fixed`), the difference of
+  // their slopes and its standard error.
+  struct Bend
+  {
+    bool Valid = false;
+    double Difference = 0.0, Error = 0.0, Angle = 0.0;
+  };
+  Bend BendAt(const V3& x, const V3& t, double halfLength, Eigen::Vector2d& u, bool fixed) const;
+  // The crease in the cross-section (x itself when the points show none; `found` says which).
+  V3 FitCrease(const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids,
+    bool* found = nullptr) const;
   V3 FitBorder(const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids) const;
   unsigned char LocalType(const V3& x) const;
   void RefitCorners(const std::vector<Chain>& chains, std::vector<std::vector<V3>>& curves) const;
@@ -844,6 +864,122 @@ std::vector<Chain> CurveRun::MergeThrough(
   return merged;
 }
 
+void CurveRun::BridgeAlongCreases()
+{
+  // Each free end and the direction it points in, over 2 FitRadius back along its curve (the
+  // last quarter aside, as in MergeThrough): the line the gap continues.
+  const int w = std::max(1, static_cast<int>(std::lround(2.0 * this->R / this->H)));
+  const int n = static_cast<int>(this->G.Vertices.size());
+  std::vector<int> ends;
+  std::vector<V3> directions;
+  for (int v = 0; v < n; ++v)
+  {
+    if (this->G.Degree(v) != 1)
+    {
+      continue;
+    }
+    std::vector<int> path{ v };
+    for (int previous = -1, current = v; static_cast<int>(path.size()) <= w;)
+    {
+      const auto& a = this->G.Adjacent[current];
+      const int next = a[0] != previous ? a[0] : (a.size() > 1 ? a[1] : -1);
+      if (next < 0 || next == v)
+      {
+        break;
+      }
+      path.push_back(next);
+      if (this->G.Degree(next) != 2)
+      {
+        break;
+      }
+      previous = current;
+      current = next;
+    }
+    const int k = static_cast<int>(path.size()) - 1;
+    if (k < 4)
+    {
+      continue;
+    }
+    const V3 d = this->G.Vertices[path[k / 4]] - this->G.Vertices[path[k]];
+    if (d.norm() > 0.0)
+    {
+      ends.push_back(v);
+      directions.push_back(d.normalized());
+    }
+  }
+  // Pairs that point at each other, nearest first; each end bridged once.
+  struct Gap
+  {
+    double Length;
+    size_t A, B;
+  };
+  std::vector<Gap> gaps;
+  for (size_t a = 0; a < ends.size(); ++a)
+  {
+    for (size_t b = a + 1; b < ends.size(); ++b)
+    {
+      const V3 ab = this->G.Vertices[ends[b]] - this->G.Vertices[ends[a]];
+      const double length = ab.norm();
+      if (length > 0.0 && ab.dot(directions[a]) >= FacingCone * length &&
+        -ab.dot(directions[b]) >= FacingCone * length)
+      {
+        gaps.push_back({ length, a, b });
+      }
+    }
+  }
+  std::sort(gaps.begin(), gaps.end(), [](const Gap& x, const Gap& y) {
+    return x.Length < y.Length || (x.Length == y.Length && (x.A < y.A || (x.A == y.A && x.B < y.B)));
+  });
+  std::vector<unsigned char> used(ends.size(), 0);
+  std::vector<vtkIdType> ids;
+  for (const Gap& gap : gaps)
+  {
+    if (used[gap.A] || used[gap.B])
+    {
+      continue;
+    }
+    const V3 a = this->G.Vertices[ends[gap.A]];
+    const V3 t = (this->G.Vertices[ends[gap.B]] - a) / gap.Length;
+    // The gap's line is a crease when the cloud bends across it: over the whole gap, two faces
+    // hinged on the line whose slopes differ significantly and by a crease's angle; and in every
+    // stretch of 2 FitRadius along it, no sign of a flat stretch: a bend nearer to none than to
+    // the whole gap's and apart from the latter by more than its own error allows.
+    const int steps = static_cast<int>(std::ceil(gap.Length / this->H));
+    const V3 middle = a + 0.5 * gap.Length * t;
+    Eigen::Vector2d u;
+    const Bend whole = this->BendAt(middle, t, 0.5 * gap.Length + this->R, u, false);
+    bool crease = whole.Valid && whole.Angle >= std::asin(MinimumCreaseAngle) &&
+      std::abs(whole.Difference) > CreaseSignificance * whole.Error;
+    const int tests = static_cast<int>(std::ceil(gap.Length / this->R));
+    for (int k = 0; crease && k <= tests; ++k)
+    {
+      const V3 x = a + (gap.Length * k / tests) * t;
+      const Bend local = this->BendAt(x, t, this->R, u, true);
+      const double offCrease = std::abs(local.Difference - whole.Difference);
+      crease = local.Valid &&
+        !(offCrease > std::abs(local.Difference) && offCrease > CreaseSignificance * local.Error);
+    }
+    std::vector<V3> bridge;
+    for (int k = 1; k < steps; ++k)
+    {
+      bridge.push_back(a + (gap.Length * k / steps) * t);
+    }
+    if (!crease)
+    {
+      continue;
+    }
+    int previous = ends[gap.A];
+    for (const V3& x : bridge)
+    {
+      const int v = this->G.Add(x);
+      this->G.Link(previous, v);
+      previous = v;
+    }
+    this->G.Link(previous, ends[gap.B]);
+    used[gap.A] = used[gap.B] = 1;
+  }
+}
+
 V3 CurveRun::EndDirection(int end) const
 {
   // Back along the curve about CornerWindow, then the direction to the end.
@@ -1122,9 +1258,13 @@ unsigned char CurveRun::LocalType(const V3& x) const
   return counts[BORDER] > counts[CONVEX] + counts[CONCAVE] ? BORDER : CONVEX;
 }
 
-V3 CurveRun::FitCrease(
-  const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids) const
+V3 CurveRun::FitCrease(const V3& x, const V3& e1, const V3& e2,
+  const std::vector<vtkIdType>& ids, bool* found) const
 {
+  if (found)
+  {
+    *found = false;
+  }
   // The faces: points split by the direction in which their normals, seen along the curve, vary
   // most; then one 2D line per face, and their intersection.
   std::vector<Eigen::Vector2d> q, nq;
@@ -1293,7 +1433,96 @@ V3 CurveRun::FitCrease(
   {
     return x;
   }
+  if (found)
+  {
+    *found = true;
+  }
   return x + p[0] * e1 + p[1] * e2;
+}
+
+CurveRun::Bend CurveRun::BendAt(
+  const V3& x, const V3& t, double halfLength, Eigen::Vector2d& u, bool fixed) const
+{
+  // The slab's points in the cross-section; the plane through them (its line u, unless given);
+  // on each side of x along u, the face's height over u by least squares; the slopes'
+  // difference and its standard error from the faces' residuals.
+  std::vector<vtkIdType> ids;
+  V3 e1, e2;
+  this->Section(x, t, halfLength, ids, e1, e2);
+  Bend result;
+  std::vector<Eigen::Vector2d> q;
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (vtkIdType i : ids)
+  {
+    const V3 r = this->Points[i] - x;
+    q.emplace_back(r.dot(e1), r.dot(e2));
+    c += q.back();
+  }
+  if (q.size() < 10)
+  {
+    return result;
+  }
+  if (!fixed)
+  {
+    c /= static_cast<double>(q.size());
+    Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
+    for (const auto& p : q)
+    {
+      m += (p - c) * (p - c).transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> plane(m);
+    u = plane.eigenvectors().col(1);
+  }
+  const Eigen::Vector2d v(-u[1], u[0]);
+  double slope[2], variance[2];
+  for (int g = 0; g < 2; ++g)
+  {
+    double sa = 0.0, sh = 0.0;
+    int n = 0;
+    for (const auto& p : q)
+    {
+      if ((p.dot(u) >= 0.0) == (g == 1))
+      {
+        sa += p.dot(u);
+        sh += p.dot(v);
+        ++n;
+      }
+    }
+    if (n < 5)
+    {
+      return result;
+    }
+    const double ma = sa / n, mh = sh / n;
+    double saa = 0.0, sah = 0.0;
+    for (const auto& p : q)
+    {
+      if ((p.dot(u) >= 0.0) == (g == 1))
+      {
+        saa += (p.dot(u) - ma) * (p.dot(u) - ma);
+        sah += (p.dot(u) - ma) * (p.dot(v) - mh);
+      }
+    }
+    if (!(saa > 0.0))
+    {
+      return result;
+    }
+    slope[g] = sah / saa;
+    double residual = 0.0;
+    for (const auto& p : q)
+    {
+      if ((p.dot(u) >= 0.0) == (g == 1))
+      {
+        const double e = p.dot(v) - mh - slope[g] * (p.dot(u) - ma);
+        residual += e * e;
+      }
+    }
+    variance[g] = residual / std::max(1, n - 2) / saa;
+  }
+  result.Valid = true;
+  result.Difference = slope[1] - slope[0];
+  result.Error = std::sqrt(variance[0] + variance[1]);
+  result.Angle = std::abs(std::atan(slope[1]) - std::atan(slope[0]));
+  return result;
 }
 
 V3 CurveRun::FitBorder(
@@ -1354,20 +1583,32 @@ V3 CurveRun::FitBorder(
   return x + p[0] * e1 + p[1] * e2;
 }
 
-V3 CurveRun::FitSection(const V3& x, const V3& t) const
+void CurveRun::Section(const V3& x, const V3& t, double halfLength, std::vector<vtkIdType>& ids,
+  V3& e1, V3& e2) const
 {
-  // The slab of all points within 1.5 R of x and 0.75 R along the curve.
-  std::vector<vtkIdType> ids;
-  this->AllSearch.Within(x, SectionRadius * this->R, this->Scratch);
+  // The slab of all points within 1.5 R of x across the curve and halfLength along it.
+  ids.clear();
+  this->AllSearch.Within(
+    x, std::sqrt(std::pow(SectionRadius * this->R, 2) + halfLength * halfLength), this->Scratch);
   for (vtkIdType i : this->Scratch)
   {
-    if (std::abs((this->Points[i] - x).dot(t)) <= SectionLength * this->R)
+    const V3 r = this->Points[i] - x;
+    const double along = r.dot(t);
+    if (std::abs(along) <= halfLength &&
+      (r - along * t).squaredNorm() <= std::pow(SectionRadius * this->R, 2))
     {
       ids.push_back(i);
     }
   }
-  V3 e1 = t.unitOrthogonal();
-  V3 e2 = t.cross(e1);
+  e1 = t.unitOrthogonal();
+  e2 = t.cross(e1);
+}
+
+V3 CurveRun::FitSection(const V3& x, const V3& t) const
+{
+  std::vector<vtkIdType> ids;
+  V3 e1, e2;
+  this->Section(x, t, SectionLength * this->R, ids, e1, e2);
   return this->LocalType(x) == BORDER ? this->FitBorder(x, e1, e2, ids)
                                       : this->FitCrease(x, e1, e2, ids);
 }
@@ -1689,6 +1930,7 @@ int vtkFeatureCurveExtraction::RequestData(
   run.RemoveSpurs();
   run.RemoveUnsupported();
   run.RemoveSpurs();
+  run.BridgeAlongCreases();
   run.SplitAtCorners();
   std::vector<std::array<int, 2>> through;
   const std::vector<Chain> chains = run.MergeThrough(run.ExtractChains(), through);

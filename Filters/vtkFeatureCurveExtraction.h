@@ -25,6 +25,13 @@
  *    other within 15 degrees); an end pointing at another curve within JoinDistance joins it.
  *    Curves shorter than JoinDistance between two junctions (a corner traced round as well as
  *    along its edges) collapse into one corner.
+ *    After cleaning (stage 3), gaps along a crease are bridged from any distance: two free ends
+ *    that point at each other (within 15 degrees, over 2 FitRadius s) are joined when all the
+ *    cloud's points bend across the gap's line: over the whole gap, the two faces hinged on it
+ *    differ in slope by a crease's angle (10 degrees) and by more than 3 standard errors (from
+ *    the faces' residuals: the cloud's own noise), and no stretch of 2 FitRadius s along it looks
+ *    flat (a bend nearer to none than to the gap's, and off the latter by more than 3 of its own
+ *    errors). The detector misses stretches of shallow creases; the cloud still shows them.
  * 3. Cleaning. Branches shorter than MinimumLength s that end freely (spurs), and pieces shorter
  *    than that, are removed, and pieces on their own shorter than 2 FitRadius s (no longer than
  *    one line fit's window); so are free branches shorter than 2 FitRadius s whose

@@ -1,7 +1,8 @@
 // vtkFeatureCurveExtraction: on generated parts, the curves are as many as the true ones, meet at
 // the corners, close on circles, lie near the exact curves; the point output's CurveId agrees
-// with the lines; a branch of unvoted points is removed, a curve goes on through a T junction;
-// bad input gives an error, not a crash.
+// with the lines; a branch of unvoted points is removed, a curve goes on through a T junction; a
+// gap along a shallow crease is bridged, the same gap on a flat sheet is not; bad input gives an
+// error, not a crash.
 #include "FeaturePointsTestRun.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -258,6 +259,33 @@ vtkSmartPointer<vtkPolyData> TeeJunction(double branchScore)
   cloud->GetFieldData()->AddArray(threshold);
   return cloud;
 }
+
+// A jittered grid (spacing 1, sigma 0.3 across) bent by `bendDegrees` along the x axis, whose
+// feature points are a band along the bend (|y| <= 1, 10 <= |x| <= 40): a stretch of 20 spacings
+// where the detector found no point.
+vtkSmartPointer<vtkPolyData> CreaseWithGap(double bendDegrees)
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  std::normal_distribution<double> noise(0.0, 0.3);
+  const double slope = std::tan(vtkMath::RadiansFromDegrees(bendDegrees));
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkUnsignedCharArray> mask;
+  mask->SetName("FeatureMask");
+  for (int j = -20; j <= 20; ++j)
+  {
+    for (int i = -50; i <= 50; ++i)
+    {
+      const double x = i + jitter(random), y = j + jitter(random);
+      points->InsertNextPoint(x, y, slope * std::max(y, 0.0) + noise(random));
+      mask->InsertNextValue(std::abs(y) <= 1.0 && std::abs(x) >= 10.0 && std::abs(x) <= 40.0);
+    }
+  }
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
+  cloud->GetPointData()->AddArray(mask);
+  return cloud;
+}
 } // namespace
 
 int TestFeatureCurveExtraction(int, char*[])
@@ -386,6 +414,24 @@ int TestFeatureCurveExtraction(int, char*[])
       }
       Expect(shared == 1, "T: branch ends on an inner vertex of the band's curve (1)", shared);
     }
+  }
+  // A gap along a shallow crease (15 degrees) is bridged, as the cloud bends all along it: one
+  // curve from end to end; the same gap on a flat sheet is not.
+  for (const double bend : { 15.0, 0.0 })
+  {
+    vtkNew<vtkFeatureCurveExtraction> curves;
+    curves->SetInputData(CreaseWithGap(bend));
+    curves->Update();
+    vtkPolyData* lines = curves->GetCurves();
+    const vtkIdType expected = bend > 0.0 ? 1 : 2;
+    Expect(lines->GetNumberOfCells() == expected,
+      bend > 0.0 ? "gap on a 15-degree crease: curves (1)" : "gap on a flat sheet: curves (2)",
+      lines->GetNumberOfCells());
+    double bounds[6];
+    lines->GetBounds(bounds);
+    Expect(bounds[0] < -37.0 && bounds[1] > 37.0 && std::abs(bounds[2]) < 1.5 &&
+        std::abs(bounds[3]) < 1.5,
+      "gap: curves along the band, end to end (x -40 to 40)", bounds[1] - bounds[0]);
   }
   // Bad input: no FeatureMask (an error, no crash, no curve); no points (no curve).
   {
