@@ -4,7 +4,8 @@
 // `mpiexec -n N TestDistributedFeaturePoints N`.
 // `TestDistributedFeaturePoints --write FILE N` (one process) writes the cloud with duplicates
 // built from an N-point bracket, for the command-line tool's test; `--write-plain FILE N` the
-// bracket itself (benchmarks).
+// bracket itself (benchmarks); `--write-plate FILE N` the plate with a hole (density contrast for
+// the paper's voxel pre-filter) with a few duplicates.
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkDataArray.h"
@@ -33,11 +34,13 @@
 
 namespace
 {
-// A generated part (the L bracket: convex and concave edges, a shallow crease), noisy.
-vtkSmartPointer<vtkPolyData> Bracket(vtkIdType n)
+// A generated part (the L bracket: convex and concave edges, a shallow crease), noisy. Its bands
+// around the features are sampled three times as densely, which the voxel pre-filter of the
+// paper's method sees on the plate with a hole.
+vtkSmartPointer<vtkPolyData> Bracket(vtkIdType n, int model = vtkFeatureModelSource::BRACKET)
 {
   vtkNew<vtkFeatureModelSource> source;
-  source->SetModel(vtkFeatureModelSource::BRACKET);
+  source->SetModel(model);
   source->SetNumberOfPoints(n);
   source->SetSeed(7);
   source->Update();
@@ -46,9 +49,9 @@ vtkSmartPointer<vtkPolyData> Bracket(vtkIdType n)
   return cloud;
 }
 
-// The bracket with many duplicates: one point in 4 copied 1 to 5 times, the copies at random
-// places in the order, so that stacks straddle the pieces.
-vtkSmartPointer<vtkPolyData> WithDuplicates(vtkPolyData* base)
+// The bracket with many duplicates: one point in `every` (4) copied 1 to 5 times, the copies at
+// random places in the order, so that stacks straddle the pieces.
+vtkSmartPointer<vtkPolyData> WithDuplicates(vtkPolyData* base, int every = 4)
 {
   vtkNew<vtkMinimalStandardRandomSequence> random;
   random->SetSeed(11);
@@ -59,7 +62,7 @@ vtkSmartPointer<vtkPolyData> WithDuplicates(vtkPolyData* base)
   for (vtkIdType i = 0; i < n; ++i)
   {
     order.push_back(i);
-    if (i % 4 == 0)
+    if (i % every == 0)
     {
       random->Next();
       const int copies = 1 + static_cast<int>(5 * random->GetValue());
@@ -173,11 +176,14 @@ bool Same(vtkPolyData* a, vtkPolyData* b, const std::string& label)
 
 int main(int argc, char* argv[])
 {
-  if (argc == 4 && (std::string(argv[1]) == "--write" || std::string(argv[1]) == "--write-plain"))
+  const std::string mode = argc == 4 ? argv[1] : "";
+  if (mode == "--write" || mode == "--write-plain" || mode == "--write-plate")
   {
     std::string error;
-    vtkSmartPointer<vtkPolyData> cloud = Bracket(std::atoll(argv[3]));
-    if (std::string(argv[1]) == "--write")
+    vtkSmartPointer<vtkPolyData> cloud = mode == "--write-plate"
+      ? WithDuplicates(Bracket(std::atoll(argv[3]), vtkFeatureModelSource::PLATE_WITH_HOLE), 16)
+      : Bracket(std::atoll(argv[3]));
+    if (mode == "--write")
     {
       cloud = WithDuplicates(cloud);
     }
@@ -202,12 +208,18 @@ int main(int argc, char* argv[])
 
   vtkSmartPointer<vtkPolyData> bracket = Bracket(20000);
   vtkSmartPointer<vtkPolyData> duplicates = WithDuplicates(bracket);
+  // The voxel pre-filter finds density contrast on the plate; at 90,000 points (65,536 or more)
+  // after its quick screen on a sample.
+  vtkSmartPointer<vtkPolyData> plate = Bracket(20000, vtkFeatureModelSource::PLATE_WITH_HOLE);
+  vtkSmartPointer<vtkPolyData> plateDuplicates = WithDuplicates(plate, 16);
+  vtkSmartPointer<vtkPolyData> large = Bracket(90000, vtkFeatureModelSource::PLATE_WITH_HOLE);
   struct Case
   {
     const char* Name;
     vtkPolyData* Cloud;
     std::function<vtkSmartPointer<vtkFeaturePointDetector>()> Make;
     bool Distributed; // the cloud is split (false: run on process 0 alone)
+    bool Prefiltered; // the voxel pre-filter keeps some points only (not every point a candidate)
   };
   auto make = [](vtkFeaturePointDetector* detector) {
     vtkSmartPointer<vtkFeaturePointDetector> owned;
@@ -220,18 +232,21 @@ int main(int argc, char* argv[])
     return vtkSmartPointer<vtkFeaturePointDetector>(f);
   };
   const Case cases[] = {
-    { "huang2023 (voxel filter off), bracket", bracket, [&] { return huang(false); }, true },
-    { "huang2023 (voxel filter off), duplicates", duplicates, [&] { return huang(false); }, true },
-    { "variation, bracket", bracket,
-      [&] { return make(vtkSurfaceVariationFeatures::New()); },
-      true },
-    { "curvature, duplicates", duplicates,
-      [&] { return make(vtkCurvatureDensityFeatures::New()); },
-      true },
-    { "huang2023 (defaults), duplicates", duplicates, [&] { return huang(true); }, false },
-    { "crease (defaults), bracket", bracket,
-      [&] { return make(vtkCreaseVotingFeatures::New()); },
+    { "huang2023 (voxel filter off), bracket", bracket, [&] { return huang(false); }, true,
       false },
+    { "huang2023 (voxel filter off), duplicates", duplicates, [&] { return huang(false); }, true,
+      false },
+    { "variation, bracket", bracket,
+      [&] { return make(vtkSurfaceVariationFeatures::New()); }, true, false },
+    { "curvature, duplicates", duplicates,
+      [&] { return make(vtkCurvatureDensityFeatures::New()); }, true, false },
+    { "huang2023 (defaults), bracket", bracket, [&] { return huang(true); }, true, false },
+    { "huang2023 (defaults), plate", plate, [&] { return huang(true); }, true, true },
+    { "huang2023 (defaults), plate with duplicates", plateDuplicates,
+      [&] { return huang(true); }, true, true },
+    { "huang2023 (defaults), plate 90000", large, [&] { return huang(true); }, true, true },
+    { "crease (defaults), bracket", bracket,
+      [&] { return make(vtkCreaseVotingFeatures::New()); }, false, false },
   };
   for (const Case& c : cases)
   {
@@ -269,6 +284,19 @@ int main(int argc, char* argv[])
       {
         owned += driver->GetNumberOfOwnedPoints(r);
         halo += driver->GetNumberOfHaloPoints(r);
+      }
+      vtkDataArray* candidates = reference->GetPointData()->GetArray("Candidate");
+      vtkIdType kept = 0;
+      for (vtkIdType i = 0; candidates && i < candidates->GetNumberOfTuples(); ++i)
+      {
+        kept += candidates->GetTuple1(i) != 0.0 ? 1 : 0;
+      }
+      if (c.Prefiltered && !(kept > 0 && kept < reference->GetNumberOfPoints()))
+      {
+        std::printf("%s: %lld candidates of %lld points: the voxel pre-filter kept %s\n",
+          label.c_str(), static_cast<long long>(kept),
+          static_cast<long long>(reference->GetNumberOfPoints()), kept ? "every point" : "none");
+        ok = 0;
       }
       if (owned != c.Cloud->GetNumberOfPoints() || (c.Distributed && halo == 0))
       {
