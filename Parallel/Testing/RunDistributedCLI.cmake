@@ -1,5 +1,6 @@
 # `mpiexec -n RANKS featurepoints IN OUT` against `featurepoints IN OUT`: the output files must be
-# byte-identical, and the summary must have the `ranks` line. Skipped (exit code 125) without
+# byte-identical, and the summary must have the `ranks` line, which says who read the input (every
+# rank its share of a binary PLY file's vertex rows; rank 0 any other file). Skipped (exit code 125) without
 # mpiexec. Variables: WRITER (TestDistributedFeaturePoints), CLI (featurepoints), WORK (a folder),
 # RANKS.
 find_program(MPIEXEC NAMES mpiexec)
@@ -15,6 +16,12 @@ execute_process(COMMAND "${WRITER}" --write-plate "${_plate}" 20000 RESULT_VARIA
 if(NOT _rc EQUAL 0 OR NOT _rc2 EQUAL 0)
   message(FATAL_ERROR "cannot write ${_cloud} and ${_plate}")
 endif()
+# The plate again as a CSV file: read by rank 0 alone, then split.
+set(_text "${WORK}/plate.csv")
+execute_process(COMMAND "${WRITER}" --write-plate "${_text}" 20000 RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "cannot write ${_text}")
+endif()
 set(_root)
 execute_process(COMMAND id -u OUTPUT_VARIABLE _uid OUTPUT_STRIP_TRAILING_WHITESPACE)
 if(_uid STREQUAL "0")
@@ -24,7 +31,7 @@ endif()
 # default) finds density contrast on the plate, none on the bracket.
 foreach(_case "huang2023-off;${_cloud};--method;huang2023;--voxel-filter;off"
     "huang2023;${_cloud};--method;huang2023" "huang2023-plate;${_plate};--method;huang2023"
-    "crease;${_cloud};--method;crease")
+    "huang2023-text;${_text};--method;huang2023" "crease;${_cloud};--method;crease")
   list(GET _case 0 _name)
   list(GET _case 1 _input)
   list(SUBLIST _case 2 -1 _options)
@@ -40,7 +47,12 @@ foreach(_case "huang2023-off;${_cloud};--method;huang2023;--voxel-filter;off"
   if(NOT _rc EQUAL 0)
     message(FATAL_ERROR "${_name}: mpiexec -n ${RANKS} featurepoints failed (${_rc}): ${_errors}")
   endif()
-  if(NOT _summary MATCHES "ranks       ${RANKS}")
+  if(_name STREQUAL "huang2023-text")
+    set(_read "by rank 0")
+  else()
+    set(_read "by every rank")
+  endif()
+  if(NOT _summary MATCHES "ranks       ${RANKS}, the input read ${_read}")
     message(FATAL_ERROR "${_name}: no 'ranks ${RANKS}' line in the summary:\n${_summary}")
   endif()
   file(SHA256 "${WORK}/${_name}-1.ply" _one)
