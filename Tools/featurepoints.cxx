@@ -52,6 +52,7 @@
 #include "vtkDistributedFeaturePoints.h"
 #include "vtkMPI.h"
 #include "vtkMPIController.h"
+#include "vtkXMLPPolyDataWriter.h"
 #include "vtkMultiProcessController.h"
 #endif
 
@@ -475,7 +476,9 @@ void PrintHelp()
     "        formats 0-10, uncompressed: LAZ is not supported in this build, it has no LASzip)\n"
     "OUTPUT  %s (VTP/VTK: every array; PLY: coordinates and every\n"
     "        numeric array as vertex properties; CSV: a header line, then one line per point;\n"
-    "        PCD: binary, every numeric array as a field)\n"
+    "        PCD: binary, every numeric array as a field); under mpiexec -n N also .pvtp:\n"
+    "        each process writes its piece (OUTPUT_<rank>.vtp beside it, points in input\n"
+    "        order, their input ids in GlobalPointIds)\n"
     "\n"
     "General options:\n"
     "  --method NAME         the method (default %s):\n",
@@ -1359,6 +1362,7 @@ public:
       this->SetThreads();
       this->ReadCloud();
       this->Extract();
+      this->WritePieces();
       return ExitSuccess;
     }
     this->CheckFiles();
@@ -1368,7 +1372,10 @@ public:
     this->Extract();
     this->ExtractCurves();
     this->Render();
-    this->WriteFiles();
+    if (!this->WritePieces())
+    {
+      this->WriteFiles();
+    }
     if (!Quiet)
     {
       this->PrintSummary();
@@ -1390,7 +1397,11 @@ private:
           (inExt.empty() ? std::string("(none)") : "'." + inExt + "'") +
           "; readable: " + vtkPointCloudIO::GetReadableExtensions());
     }
-    if (!vtkPointCloudIO::CanWrite(outExt))
+    if (outExt == "pvtp")
+    {
+      this->CheckPieces();
+    }
+    else if (!vtkPointCloudIO::CanWrite(outExt))
     {
       Fail(ExitUsage, s.Output + ": cannot tell the output format from the extension " +
           (outExt.empty() ? std::string("(none)") : "'." + outExt + "'") +
@@ -1422,6 +1433,76 @@ private:
       Fail(ExitFailure, s.Screenshot + ": cannot render: this VTK renders through X and no "
                                        "display is set (run under xvfb-run -a)");
     }
+  }
+
+  // OUT.pvtp (under mpiexec): every process writes its own points; the picture and the curves
+  // need the whole cloud on one process.
+  void CheckPieces() const
+  {
+    const Settings& s = this->S;
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (!Processes)
+#endif
+    {
+      Fail(ExitUsage, s.Output + ": a parallel .pvtp output is written by several processes: run "
+                                 "under mpiexec -n N (N > 1), or write a .vtp file");
+    }
+    if (!s.Screenshot.empty() || !s.Lines.empty())
+    {
+      Fail(ExitUsage, s.Output + ": --screenshot and --lines need the whole result on one "
+                                 "process: not with a parallel .pvtp output");
+    }
+  }
+
+  // OUT.pvtp: each process writes its piece of the result (its own points, in input order, with
+  // their input indices in `GlobalPointIds`), process 0 the .pvtp file that lists the pieces.
+  // False (nothing written) for any other output.
+  bool WritePieces()
+  {
+#ifdef FEATUREPOINTS_HAVE_MPI
+    const Settings& s = this->S;
+    if (!Processes || vtkPointCloudIO::GetExtension(s.Output) != "pvtp")
+    {
+      return false;
+    }
+    this->Meter->Stage("writing");
+    const auto start = Clock::now();
+    vtkSmartPointer<vtkPolyData> written = this->Result;
+    if (s.FeaturesOnly)
+    {
+      written = vtkSmartPointer<vtkPolyData>::New();
+      vtkFeaturePointDetector::SelectFeaturePoints(this->Result,
+        vtkUnsignedCharArray::SafeDownCast(this->Result->GetPointData()->GetArray("FeatureMask")),
+        written);
+    }
+    const int nProcs = Processes->GetNumberOfProcesses();
+    vtkNew<vtkXMLPPolyDataWriter> writer;
+    writer->SetController(Processes);
+    writer->SetFileName(s.Output.c_str());
+    writer->SetNumberOfPieces(nProcs);
+    writer->SetStartPiece(Rank);
+    writer->SetEndPiece(Rank);
+    writer->SetDataModeToAppended();
+    writer->SetInputData(written);
+    vtkNew<ErrorFlag> writeError;
+    writer->AddObserver(vtkCommand::ErrorEvent, writeError);
+    const int ok = writer->Write() == 1 && writeError->Message.empty() ? 1 : 0;
+    int allOk = 0;
+    Processes->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
+    this->Meter->Finish();
+    if (!ok)
+    {
+      Fail(ExitFailure, s.Output + ": cannot write this process's piece: " + writeError->Message);
+    }
+    if (!allOk && Rank == 0)
+    {
+      Fail(ExitFailure, s.Output + ": another process could not write its piece");
+    }
+    this->Times.emplace_back("write", Seconds(start));
+    return true;
+#else
+    return false;
+#endif
   }
 
   // Any signal that ends the program removes the temporary files first (SIGPIPE: a closed
@@ -1633,12 +1714,20 @@ private:
       this->Driver->SetController(Processes);
       this->Driver->SetDetector(this->Filter);
       this->Driver->SetInputData(this->Filter->GetInputDataObject(0, 0));
-      this->Driver->GatherOutputOn();
+      // A .pvtp output: each process keeps its own points (in input order) and writes them.
+      const bool pieces = vtkPointCloudIO::GetExtension(s.Output) == "pvtp";
+      if (pieces && exponent != 0)
+      {
+        Fail(ExitFailure, s.Input + ": the cloud's extent needs a scaled frame, which a parallel "
+                                    ".pvtp output does not take: write a .vtp file");
+      }
+      this->Driver->SetGatherOutput(!pieces);
       this->Driver->AddObserver(vtkCommand::ErrorEvent, filterError);
       this->Driver->Update();
       this->Meter->Finish();
       if (Rank != 0)
       {
+        this->Result = this->Driver->GetOutput();
         return;
       }
       this->Times.emplace_back("extract", Seconds(start));

@@ -62,3 +62,20 @@ foreach(_case "huang2023-off;${_cloud};--method;huang2023;--voxel-filter;off"
   endif()
   message("${_name}: ${RANKS} ranks give the same file as one process\n${_summary}")
 endforeach()
+
+# OUT.pvtp: each rank writes its piece; the pieces hold every point once, in ascending global ids,
+# with one process's values.
+file(REMOVE_RECURSE "${WORK}/pieces")
+file(MAKE_DIRECTORY "${WORK}/pieces")
+execute_process(COMMAND "${MPIEXEC}" --oversubscribe ${_root} -n ${RANKS} "${CLI}" "${_plate}"
+  "${WORK}/pieces/plate.pvtp" --method huang2023 --threads 1 --quiet
+  RESULT_VARIABLE _rc ERROR_VARIABLE _errors)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "pvtp: mpiexec -n ${RANKS} featurepoints failed (${_rc}): ${_errors}")
+endif()
+execute_process(COMMAND "${WRITER}" --compare-pvtp "${WORK}/pieces/plate.pvtp"
+  "${WORK}/huang2023-plate-1.ply" ${RANKS} RESULT_VARIABLE _rc OUTPUT_VARIABLE _report)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "pvtp: the pieces differ from one process's output:\n${_report}")
+endif()
+message("pvtp: ${RANKS} pieces, the same values as one process\n${_report}")

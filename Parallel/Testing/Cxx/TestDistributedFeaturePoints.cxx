@@ -5,7 +5,10 @@
 // `TestDistributedFeaturePoints --write FILE N` (one process) writes the cloud with duplicates
 // built from an N-point bracket, for the command-line tool's test; `--write-plain FILE N` the
 // bracket itself (benchmarks); `--write-plate FILE N` the plate with a hole (density contrast for
-// the paper's voxel pre-filter) with a few duplicates.
+// the paper's voxel pre-filter) with a few duplicates. `--compare-pvtp FILE.pvtp REFERENCE N`
+// checks a parallel output of N pieces against one process's output REFERENCE (any readable
+// format): each piece holds its points in ascending GlobalPointIds, the pieces every point once,
+// and every array of the reference is the same at each point's GlobalPointIds.
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkDataArray.h"
@@ -24,13 +27,16 @@
 #include "vtkSmartPointer.h"
 #include "vtkSurfaceVariationFeatures.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkXMLPPolyDataReader.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -174,8 +180,88 @@ bool Same(vtkPolyData* a, vtkPolyData* b, const std::string& label)
 }
 } // namespace
 
+// --compare-pvtp: see the file's comment.
+int ComparePieces(const char* pvtp, const char* referenceFile, int pieces)
+{
+  std::string error;
+  vtkSmartPointer<vtkPointSet> reference = vtkPointCloudIO::Read(referenceFile, error);
+  if (!reference)
+  {
+    std::printf("%s\n", error.c_str());
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkXMLPPolyDataReader> reader;
+  reader->SetFileName(pvtp);
+  reader->UpdateInformation();
+  if (reader->GetNumberOfPieces() != pieces)
+  {
+    std::printf("%s: %d pieces, %d expected\n", pvtp, reader->GetNumberOfPieces(), pieces);
+    return EXIT_FAILURE;
+  }
+  const vtkIdType n = reference->GetNumberOfPoints();
+  std::vector<int> seen(n, 0);
+  int failed = 0;
+  for (int p = 0; p < pieces; ++p)
+  {
+    reader->UpdatePiece(p, pieces, 0);
+    vtkPolyData* piece = reader->GetOutput();
+    vtkDataArray* gids = piece->GetPointData()->GetArray("GlobalPointIds");
+    if (!gids)
+    {
+      std::printf("piece %d: no GlobalPointIds\n", p);
+      return EXIT_FAILURE;
+    }
+    long long last = -1;
+    for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+    {
+      const long long g = static_cast<long long>(gids->GetTuple1(i));
+      if (g <= last || g >= n)
+      {
+        std::printf("piece %d: point %lld has GlobalPointIds %lld after %lld\n", p,
+          static_cast<long long>(i), g, last);
+        return EXIT_FAILURE;
+      }
+      last = g;
+      ++seen[g];
+      double x[3], y[3];
+      piece->GetPoint(i, x);
+      reference->GetPoint(g, y);
+      bool same = x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
+      for (int a = 0; a < reference->GetPointData()->GetNumberOfArrays(); ++a)
+      {
+        vtkDataArray* r = reference->GetPointData()->GetArray(a);
+        vtkDataArray* q = r ? piece->GetPointData()->GetArray(r->GetName()) : nullptr;
+        for (int c = 0; r && q && c < r->GetNumberOfComponents(); ++c)
+        {
+          same = same && r->GetComponent(g, c) == q->GetComponent(i, c);
+        }
+        same = same && (!r || q);
+      }
+      if (!same && failed++ < 5)
+      {
+        std::printf("piece %d: point %lld (global %lld) differs from one process's\n", p,
+          static_cast<long long>(i), g);
+      }
+    }
+    std::printf("piece %d: %lld points, global ids ascending\n", p,
+      static_cast<long long>(piece->GetNumberOfPoints()));
+  }
+  const vtkIdType once = std::count(seen.begin(), seen.end(), 1);
+  if (once != n)
+  {
+    std::printf("%lld of %lld points are in exactly one piece\n", static_cast<long long>(once),
+      static_cast<long long>(n));
+    return EXIT_FAILURE;
+  }
+  return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+}
+
 int main(int argc, char* argv[])
 {
+  if (argc == 5 && std::string(argv[1]) == "--compare-pvtp")
+  {
+    return ComparePieces(argv[2], argv[3], std::atoi(argv[4]));
+  }
   const std::string mode = argc == 4 ? argv[1] : "";
   if (mode == "--write" || mode == "--write-plain" || mode == "--write-plate")
   {
