@@ -9,6 +9,7 @@ mpiexec, pvbatch, the plugin, or a pvbatch that runs with 2 MPI processes.
 """
 import os
 import shutil
+import signal
 import subprocess
 import sys
 
@@ -35,18 +36,34 @@ if hasattr(os, "geteuid") and os.geteuid() == 0:
 
 
 def run(command, timeout=600):
+    """The exit code and output of `command`; past `timeout` seconds its whole process group (mpiexec
+    and the processes it started) is ended."""
     try:
-        done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                              timeout=timeout, universal_newlines=True)
-    except (OSError, subprocess.TimeoutExpired) as e:
+        child = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                 universal_newlines=True, start_new_session=True)
+    except OSError as e:
         return 1, str(e)
-    return done.returncode, done.stdout
+    try:
+        out, _ = child.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        for sig in (signal.SIGTERM, signal.SIGKILL):
+            try:
+                os.killpg(child.pid, sig)
+            except OSError:
+                pass
+            try:
+                out, _ = child.communicate(timeout=10)
+                break
+            except subprocess.TimeoutExpired:
+                out = ""
+        return 1, "timed out after %d s\n%s" % (timeout, out)
+    return child.returncode, out
 
 
 # Can this pvbatch run with 2 MPI processes here? (A ParaView without MPI, or an MPI that cannot
 # start 2 processes, is something missing, not a failure of the plugin.)
 probe = os.path.join(folder, "probe.txt")
-code, text = run(launcher + ["-n", "2", pvbatch, "--mpi", script, "--probe", probe], 300)
+code, text = run(launcher + ["-n", "2", pvbatch, "--mpi", script, "--probe", probe], 120)
 if code != 0 or not os.path.isfile(probe):
     skip("mpiexec -n 2 pvbatch --mpi does not run here:\n" + text[-2000:])
 with open(probe) as f:
