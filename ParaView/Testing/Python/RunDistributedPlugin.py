@@ -40,7 +40,7 @@ def run(command, timeout=600):
     and the processes it started) is ended."""
     try:
         child = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                 universal_newlines=True, start_new_session=True)
+                                 universal_newlines=True, preexec_fn=os.setsid)
     except OSError as e:
         return 1, str(e)
     try:
