@@ -1148,7 +1148,8 @@ int vtkDistributedFeaturePoints::RequestData(
     {
       break;
     }
-    if (attempt >= 2)
+    // At most three shortfalls: the quick screen's, the voxel filter's, clamped points'.
+    if (attempt >= 3)
     {
       vtkErrorMacro(<< "The detector needs a halo of width " << widest << ", more than the "
                     << width << " it was given.");
