@@ -170,7 +170,7 @@ public:
    * given (HaloWidth) against the one it needs once it knows the cloud's figures, and does nothing
    * with less; GetRequiredHaloWidth() then says how much (see vtkDistributedFeaturePoints).
    */
-  virtual double GetHaloWidth(double vtkNotUsed(spacing)) const { return 0.0; }
+  virtual double GetHaloWidthFor(double vtkNotUsed(spacing)) const { return 0.0; }
 
   ///@{
   /**

@@ -209,7 +209,7 @@ featurepoints::DensityContrast MakeVoxelTest(
 }
 } // namespace
 
-double vtkFeaturePointExtraction::GetHaloWidth(double spacing) const
+double vtkFeaturePointExtraction::GetHaloWidthFor(double spacing) const
 {
   return this->UseVoxelFilter
     ? featurepoints::DensityContrast::HaloWidthFor(this->VoxelSizeFactor * spacing)

@@ -205,7 +205,7 @@ public:
    * default VoxelSizeFactor). The quick screen's voxels follow its sample's spacing, which may
    * be a little larger than the cloud's: the run asks for more when it is (see the superclass).
    */
-  double GetHaloWidth(double spacing) const override;
+  double GetHaloWidthFor(double spacing) const override;
 
 protected:
   vtkFeaturePointExtraction();

@@ -915,7 +915,7 @@ int vtkDistributedFeaturePoints::RequestData(
   // blocks, in units of the cloud's mean spacing): taken from an estimate of the spacing from
   // above, with a margin. A run that finds it too narrow says how wide it must be (the same on
   // every process), and the halo is built again.
-  const double widthPerSpacing = detector->GetHaloWidth(1.0);
+  const double widthPerSpacing = detector->GetHaloWidthFor(1.0);
   double width = 0.0;
   Rows piece;
   vtkNew<vtkUnsignedCharArray> ghosts;
@@ -933,7 +933,7 @@ int vtkDistributedFeaturePoints::RequestData(
       {
         double local = EstimateSpacing(neighborhoods, valid), largest = 0.0;
         controller->AllReduce(&local, &largest, 1, vtkCommunicator::MAX_OP);
-        width = detector->GetHaloWidth(SpacingMargin * largest);
+        width = detector->GetHaloWidthFor(SpacingMargin * largest);
       }
       const double factor = std::ldexp(1.0, levels) - 1.0;
       double region[6];
