@@ -131,11 +131,21 @@ double vtkFeaturePointDetector::GlobalMeanSpacing(
       positive.push_back(nearest[i]);
     }
   }
-  std::vector<double> copy(positive);
-  const double limit = 10.0 * this->GlobalUpperMedian(copy);
+  return this->GlobalMeanWithoutOutliers(positive, 10.0);
+}
+
+double vtkFeaturePointDetector::GlobalMeanWithoutOutliers(
+  const std::vector<double>& values, double factor) const
+{
+  if (!this->IsDistributed())
+  {
+    return featurepoints::MeanWithoutOutliers(values, factor);
+  }
+  std::vector<double> copy(values);
+  const double limit = factor * this->GlobalUpperMedian(copy);
   featurepoints::ExactSum sum;
   long long count[1] = { 0 };
-  for (double v : positive)
+  for (double v : values)
   {
     if (v <= limit)
     {
@@ -266,6 +276,7 @@ void vtkFeaturePointDetector::ResetFigures()
   this->ThresholdUsed = 0.0;
   this->NumberOfCandidates = 0;
   this->NumberOfFeaturePoints = 0;
+  this->RequiredHaloWidth = 0.0;
   this->OriginalIds.clear();
 }
 
@@ -779,4 +790,5 @@ void vtkFeaturePointDetector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutputFeaturesOnly: " << this->OutputFeaturesOnly << "\n";
   os << indent << "Locator: " << (this->Locator ? this->Locator->GetClassName() : "(none)") << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "HaloWidth: " << this->HaloWidth << "\n";
 }

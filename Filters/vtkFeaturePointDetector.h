@@ -163,6 +163,30 @@ public:
     return false;
   }
 
+  /**
+   * Beyond GetHaloExtent(): the width, on each axis, around each own point within which a
+   * distributed run's piece must hold every point, for a cloud of mean spacing `spacing` (the
+   * paper's method's voxel blocks). 0 (the default): none. The method checks the width it is
+   * given (HaloWidth) against the one it needs once it knows the cloud's figures, and does nothing
+   * with less; GetRequiredHaloWidth() then says how much (see vtkDistributedFeaturePoints).
+   */
+  virtual double GetHaloWidthFor(double vtkNotUsed(spacing)) const { return 0.0; }
+
+  ///@{
+  /**
+   * Distributed runs: the width (on each axis) around each own point within which the piece
+   * holds every point of the cloud, set by vtkDistributedFeaturePoints. Default 0.
+   */
+  vtkSetClampMacro(HaloWidth, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(HaloWidth, double);
+  ///@}
+
+  /**
+   * Distributed runs: the halo width the last run needed; larger than HaloWidth when the run
+   * stopped for want of it (its output is then all zeros). VTK_DOUBLE_MAX: the whole cloud.
+   */
+  vtkGetMacro(RequiredHaloWidth, double);
+
   /** Name of the point array the threshold applies to ("F", "SurfaceVariation", ...). */
   virtual const char* GetScoreArrayName() const = 0;
 
@@ -259,6 +283,11 @@ protected:
    * `local` in one process.
    */
   double GlobalMeanSpacing(vtkPointCloudNeighborhoods* neighborhoods, double local) const;
+  /**
+   * featurepoints::MeanWithoutOutliers(values, factor) over the `values` of every process (the
+   * own points' values each).
+   */
+  double GlobalMeanWithoutOutliers(const std::vector<double>& values, double factor) const;
   ///@}
 
   // Distributed runs: the own points (from the input's vtkGhostType) and the cloud's bounds, after
@@ -283,6 +312,8 @@ protected:
   double ThresholdUsed = 0.0;
   vtkIdType NumberOfCandidates = 0;
   vtkIdType NumberOfFeaturePoints = 0;
+  double HaloWidth = 0.0;
+  double RequiredHaloWidth = 0.0;
   // Input id of each point of the renumbered cloud (empty: not renumbered).
   std::vector<int32_t> OriginalIds;
   vtkMultiProcessController* Controller = nullptr;

@@ -9,6 +9,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointData.h"
@@ -187,21 +188,90 @@ struct vtkFeaturePointExtraction::ScoredPoints
   double Spacing = 0.0;              // the mean spacing d
   bool Screen = false;               // the voxel pre-filter runs (its sample showed contrast)
   bool ScoreAll = true;              // every valid point is a candidate
+  // Distributed runs: the own points and the reductions the voxel pre-filter takes.
+  featurepoints::DensityContrastProcesses Processes;
+  bool Distributed = false;
 };
 
 namespace
 {
-// The voxel density-contrast test with the filter's parameters.
-featurepoints::DensityContrast MakeVoxelTest(vtkFeaturePointExtraction* self)
+// The voxel density-contrast test with the filter's parameters (and a distributed run's processes).
+featurepoints::DensityContrast MakeVoxelTest(
+  vtkFeaturePointExtraction* self, const featurepoints::DensityContrastProcesses* processes)
 {
   featurepoints::DensityContrast voxels;
   voxels.VoxelSizeFactor = self->GetVoxelSizeFactor();
   voxels.DensityContrast = self->GetDensityContrast();
   voxels.ContrastRule = self->GetVoxelContrastRule();
   voxels.Reporter = self;
+  voxels.Processes = processes;
   return voxels;
 }
 } // namespace
+
+double vtkFeaturePointExtraction::GetHaloWidthFor(double spacing) const
+{
+  return this->UseVoxelFilter
+    ? featurepoints::DensityContrast::HaloWidthFor(this->VoxelSizeFactor * spacing)
+    : 0.0;
+}
+
+bool vtkFeaturePointExtraction::HaloSuffices(double required)
+{
+  this->RequiredHaloWidth = std::max(this->RequiredHaloWidth, required);
+  return !this->IsDistributed() || required <= this->HaloWidth;
+}
+
+void vtkFeaturePointExtraction::PrepareProcesses(ScoredPoints& scored)
+{
+  scored.Distributed = this->IsDistributed();
+  if (!scored.Distributed)
+  {
+    return;
+  }
+  featurepoints::DensityContrastProcesses& p = scored.Processes;
+  p.Owned = this->Owned.data();
+  p.InputOrder = this->OriginalIds.empty() ? nullptr : this->OriginalIds.data();
+  p.Bounds = this->GlobalBounds;
+  p.HaloWidth = this->HaloWidth;
+  p.Sum = [this](vtkIdType value) { return this->GlobalSum(value); };
+  p.UpperMedian = [this](std::vector<double>& values) { return this->GlobalUpperMedian(values); };
+  p.MinMax = [this](double lo[3], double hi[3]) {
+    double globalLo[3], globalHi[3];
+    this->Controller->AllReduce(lo, globalLo, 3, vtkCommunicator::MIN_OP);
+    this->Controller->AllReduce(hi, globalHi, 3, vtkCommunicator::MAX_OP);
+    std::copy_n(globalLo, 3, lo);
+    std::copy_n(globalHi, 3, hi);
+  };
+  p.MeanWithoutOutliers = [this](std::vector<double>& values) {
+    return this->GlobalMeanWithoutOutliers(values, 10.0);
+  };
+  p.AllGather = [this](std::vector<uint64_t>& keys) {
+    const int nProcs = this->Controller->GetNumberOfProcesses();
+    long long count = static_cast<long long>(keys.size());
+    std::vector<long long> counts(nProcs, 0);
+    this->Controller->AllGather(&count, counts.data(), 1);
+    std::vector<vtkIdType> lengths(nProcs), offsets(nProcs, 0);
+    vtkIdType total = 0;
+    for (int q = 0; q < nProcs; ++q)
+    {
+      lengths[q] = static_cast<vtkIdType>(counts[q]);
+      offsets[q] = total;
+      total += lengths[q];
+    }
+    if (total == 0)
+    {
+      keys.clear();
+      return;
+    }
+    std::vector<long long> local(keys.begin(), keys.end());
+    std::vector<long long> all(total);
+    local.resize(std::max<size_t>(local.size(), 1));
+    this->Controller->AllGatherV(local.data(), all.data(), static_cast<vtkIdType>(keys.size()),
+      lengths.data(), offsets.data());
+    keys.assign(all.begin(), all.end());
+  };
+}
 
 vtkFeaturePointExtraction::vtkFeaturePointExtraction() = default;
 vtkFeaturePointExtraction::~vtkFeaturePointExtraction() = default;
@@ -211,18 +281,27 @@ bool vtkFeaturePointExtraction::MeasureSpacing(
 {
   // A sample of the cloud that shows no density contrast: the full test would most likely find
   // none either, and its 1-nearest pass is skipped (see the header).
+  this->PrepareProcesses(scored);
+  const featurepoints::DensityContrastProcesses* processes =
+    scored.Distributed ? &scored.Processes : nullptr;
   scored.Screen = this->UseVoxelFilter;
   if (scored.Screen)
   {
     this->BeginStage("voxel screen");
-    scored.Screen = MakeVoxelTest(this).SampleShowsContrast(neighborhoods);
+    featurepoints::DensityContrast screen = MakeVoxelTest(this, processes);
+    scored.Screen = screen.SampleShowsContrast(neighborhoods);
+    if (!this->HaloSuffices(screen.RequiredHaloWidth))
+    {
+      return false;
+    }
   }
   // Without the pre-filter every point is scored: its k-nearest table also gives the spacing, so
   // each point is searched once. With it, a 1-nearest pass over all points comes first.
   if (scored.Screen)
   {
     this->BeginStage("spacing");
-    scored.Spacing = neighborhoods->ComputeMeanSpacing();
+    scored.Spacing =
+      this->GlobalMeanSpacing(neighborhoods, neighborhoods->ComputeMeanSpacing());
   }
   else
   {
@@ -239,7 +318,7 @@ bool vtkFeaturePointExtraction::MeasureSpacing(
   return !this->GetAbortExecute() && this->CheckSpacing(scored.Spacing, neighborhoods);
 }
 
-void vtkFeaturePointExtraction::MarkCandidates(
+bool vtkFeaturePointExtraction::MarkCandidates(
   vtkPointCloudNeighborhoods* neighborhoods, ScoredPoints& scored, unsigned char* isCandidate)
 {
   const unsigned char* valid = neighborhoods->GetValidMask();
@@ -247,9 +326,14 @@ void vtkFeaturePointExtraction::MarkCandidates(
   if (scored.Screen)
   {
     this->BeginStage("voxel filter");
-    featurepoints::DensityContrast voxels = MakeVoxelTest(this);
+    featurepoints::DensityContrast voxels =
+      MakeVoxelTest(this, scored.Distributed ? &scored.Processes : nullptr);
     voxels.MarkCandidates(neighborhoods->GetPoints(), valid, scored.Spacing,
       neighborhoods->GetNearestDistances().data(), isCandidate);
+    if (!this->HaloSuffices(voxels.RequiredHaloWidth))
+    {
+      return false;
+    }
     // No density contrast anywhere: the cloud is uniformly sampled and the step would drop every
     // feature, so every point is scored instead.
     scored.ScoreAll = voxels.NumberOfContrastVoxels == 0;
@@ -258,6 +342,7 @@ void vtkFeaturePointExtraction::MarkCandidates(
   {
     std::copy(valid, valid + neighborhoods->GetNumberOfPoints(), isCandidate);
   }
+  return true;
 }
 
 bool vtkFeaturePointExtraction::FindScoredNeighbors(vtkPointCloudNeighborhoods* neighborhoods,
@@ -276,7 +361,7 @@ bool vtkFeaturePointExtraction::FindScoredNeighbors(vtkPointCloudNeighborhoods* 
   if (this->ThresholdMode == AUTOMATIC && !scored.ScoreAll)
   {
     scored.BackgroundWeight = this->SampleBackground(points, neighborhoods->GetValidMask(),
-      isCandidate, scored.Spacing, neighborhoods->GetBounds(), scored.Background);
+      isCandidate, scored.Spacing, this->CloudBounds(neighborhoods), scored.Background);
   }
   std::vector<unsigned char> sampled(n, 0);
   for (vtkIdType id : scored.Background)
@@ -392,8 +477,8 @@ int vtkFeaturePointExtraction::RequestData(
   {
     return finish();
   }
-  this->MarkCandidates(neighborhoods, scored, isCandidate);
-  if (!this->FindScoredNeighbors(neighborhoods, k, isCandidate, scored))
+  if (!this->MarkCandidates(neighborhoods, scored, isCandidate) ||
+    !this->FindScoredNeighbors(neighborhoods, k, isCandidate, scored))
   {
     return finish();
   }
@@ -444,13 +529,17 @@ int vtkFeaturePointExtraction::SampleBackground(vtkPoints* points, const unsigne
   const unsigned char* isCandidate, double d, const double bounds[6],
   std::vector<vtkIdType>& background)
 {
+  // Distributed runs: the own points' figures over all processes, and only own points sampled
+  // (the halo's scores are not the process's to give).
   background.clear();
   const vtkIdType n = points->GetNumberOfPoints();
+  auto eligible = [&](vtkIdType i) { return valid[i] && !isCandidate[i] && this->IsOwned(i); };
   vtkIdType others = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    others += valid[i] && !isCandidate[i] ? 1 : 0;
+    others += eligible(i) ? 1 : 0;
   }
+  others = this->GlobalSum(others);
   if (others == 0)
   {
     return 1;
@@ -463,7 +552,7 @@ int vtkFeaturePointExtraction::SampleBackground(vtkPoints* points, const unsigne
   double x[3];
   for (vtkIdType i = 0; i < n; ++i)
   {
-    if (!valid[i] || isCandidate[i])
+    if (!eligible(i))
     {
       continue;
     }
@@ -473,14 +562,14 @@ int vtkFeaturePointExtraction::SampleBackground(vtkPoints* points, const unsigne
       background.push_back(i);
     }
   }
-  const vtkIdType sampled = static_cast<vtkIdType>(background.size());
+  const vtkIdType sampled = this->GlobalSum(static_cast<vtkIdType>(background.size()));
   if (sampled < std::min(others, BackgroundMinimum))
   {
     // Too few blocks (a small cloud): every non-candidate stands for itself.
     background.clear();
     for (vtkIdType i = 0; i < n; ++i)
     {
-      if (valid[i] && !isCandidate[i])
+      if (eligible(i))
       {
         background.push_back(i);
       }

@@ -187,9 +187,7 @@ public:
 
   /**
    * Distributed runs: the largest k of the method around each own point, and the neighbours'
-   * own DensityNeighbors nearest (m(j) of Eqs. 4 and 6), so two generations. The voxel
-   * pre-filter's cloud-wide voxel figures are not reduced yet: with UseVoxelFilter on this
-   * returns false (see the superclass).
+   * own DensityNeighbors nearest (m(j) of Eqs. 4 and 6), so two generations.
    */
   bool GetHaloExtent(int& neighbors, int& levels) const override
   {
@@ -197,8 +195,17 @@ public:
       std::max(this->DensityNeighbors,
         this->SSICenter == DENSITY_WEIGHTED_MEAN ? this->CenterNeighbors : 0));
     levels = 2;
-    return !this->UseVoxelFilter;
+    return true;
   }
+
+  /**
+   * Distributed runs with the voxel pre-filter: the voxels 3 each way around an own point's
+   * voxel, and the nearest point of each of their points, are in the piece
+   * (featurepoints::DensityContrast::HaloWidthFor: about 10.9 voxel sides, 27 spacings at the
+   * default VoxelSizeFactor). The quick screen's voxels follow its sample's spacing, which may
+   * be a little larger than the cloud's: the run asks for more when it is (see the superclass).
+   */
+  double GetHaloWidthFor(double spacing) const override;
 
 protected:
   vtkFeaturePointExtraction();
@@ -209,8 +216,9 @@ protected:
   /**
    * The non-candidates scored for the AUTOMATIC threshold (see the class comment): the points of
    * the sampled blocks, in point order. Returns how many non-candidates each of them stands for.
+   * Distributed runs: the own points of the sampled blocks, the counts over all processes.
    */
-  static int SampleBackground(vtkPoints* points, const unsigned char* valid,
+  int SampleBackground(vtkPoints* points, const unsigned char* valid,
     const unsigned char* isCandidate, double spacing, const double bounds[6],
     std::vector<vtkIdType>& background);
 
@@ -224,8 +232,12 @@ protected:
    */
   struct ScoredPoints;
   bool MeasureSpacing(vtkPointCloudNeighborhoods* neighborhoods, int k, ScoredPoints& scored);
-  void MarkCandidates(
+  bool MarkCandidates(
     vtkPointCloudNeighborhoods* neighborhoods, ScoredPoints& scored, unsigned char* isCandidate);
+  // Distributed runs: the own points and reductions the voxel pre-filter takes.
+  void PrepareProcesses(ScoredPoints& scored);
+  // Keeps the halo width a stage needed; false when the piece's is narrower (the run stops).
+  bool HaloSuffices(double required);
   bool FindScoredNeighbors(vtkPointCloudNeighborhoods* neighborhoods, int k,
     const unsigned char* isCandidate, ScoredPoints& scored);
   bool ComputeMeanDistances(vtkPointCloudNeighborhoods* neighborhoods, int k,

@@ -273,6 +273,7 @@ struct VoxelRun
   vtkIdType N;
   double A; // the voxel side
   featurepoints::PointReader Reader;
+  const featurepoints::DensityContrastProcesses* P = nullptr; // null: one process
 
   // The points in blocks of Block ids, so that the passes over them run in parallel and still
   // write in point order: BlockValid[b] valid points come before block b.
@@ -296,6 +297,11 @@ struct VoxelRun
   double MinimumCount = 0.0;        // BLOCK_SPACING: blocks with fewer points measure nothing
   double Cutoff = 0.0;              // BLOCK_SPACING: the density a contrast block exceeds
   std::vector<unsigned char> Contrast, Keep;
+  // Distributed runs (all 1 in one process): the voxels that hold an own point; those the figures
+  // of the whole cloud count, each voxel on exactly one process (the one that owns its point of
+  // the smallest global id); and those within one voxel of an own point's, whose levels, contrast
+  // and flood are exact in the piece (the halo holds 3 voxels around each own point's voxel).
+  std::vector<unsigned char> HasOwn, Counted, Trusted;
 
   VoxelRun(vtkPoints* points, const unsigned char* valid, double a)
     : Points(points)
@@ -307,6 +313,12 @@ struct VoxelRun
   }
 
   bool IsValid(vtkIdType i) const { return !this->Valid || this->Valid[i]; }
+  bool IsOwn(vtkIdType i) const { return !this->P || this->P->Owned[i]; }
+  vtkIdType Sum(vtkIdType value) const { return this->P ? this->P->Sum(value) : value; }
+  double UpperMedian(std::vector<double>& values) const
+  {
+    return this->P ? this->P->UpperMedian(values) : featurepoints::UpperMedian(values);
+  }
   vtkIdType BlockEnd(vtkIdType blk) const { return std::min(this->N, (blk + 1) * Block); }
 
   // Eqs. 10-11: the grid starts at the bounding box's minimum corner (computed in blocks of
@@ -329,8 +341,11 @@ struct VoxelRun
         {
           if (this->IsValid(i))
           {
-            this->Reader.Get(i, y);
             ++count;
+          }
+          if (this->IsValid(i) && this->IsOwn(i))
+          {
+            this->Reader.Get(i, y);
             for (int c = 0; c < 3; ++c)
             {
               box[c] = std::min(box[c], y[c]);
@@ -353,6 +368,10 @@ struct VoxelRun
       }
       this->BlockValid[blk + 1] += this->BlockValid[blk];
     }
+    if (this->P)
+    {
+      this->P->MinMax(lo, hi); // the whole cloud's box
+    }
     this->NumberOfValid = this->BlockValid[nBlocks];
     bool fits = true;
     for (int c = 0; c < 3; ++c)
@@ -371,13 +390,12 @@ struct VoxelRun
       coord.clear();
       for (vtkIdType i = 0; i < this->N; ++i)
       {
-        if (this->IsValid(i))
+        if (this->IsValid(i) && this->IsOwn(i))
         {
           coord.push_back(this->Points->GetPoint(i)[c]);
         }
       }
-      this->Origin[c] =
-        featurepoints::UpperMedian(coord) - static_cast<double>(KeyRange / 2) * this->A;
+      this->Origin[c] = this->UpperMedian(coord) - static_cast<double>(KeyRange / 2) * this->A;
     }
   }
 
@@ -408,12 +426,13 @@ struct VoxelRun
             wasClamped = wasClamped || g != f;
             ijk[c] = static_cast<int64_t>(g);
           }
-          blockClamped[blk] += wasClamped ? 1 : 0;
+          blockClamped[blk] += wasClamped && this->IsOwn(i) ? 1 : 0;
           this->Keyed[e++] = { PackKey(ijk[0], ijk[1], ijk[2]), static_cast<int32_t>(i) };
         }
       }
     });
-    this->Clamped = std::accumulate(blockClamped.begin(), blockClamped.end(), vtkIdType(0));
+    this->Clamped =
+      this->Sum(std::accumulate(blockClamped.begin(), blockClamped.end(), vtkIdType(0)));
     vtkSMPTools::Sort(this->Keyed.begin(), this->Keyed.end());
   }
 
@@ -433,6 +452,57 @@ struct VoxelRun
     this->Start.push_back(static_cast<vtkIdType>(this->Keyed.size()));
     this->Grid.BuildRows();
     this->NumberOfVoxels = static_cast<vtkIdType>(this->Grid.Keys.size());
+    const vtkIdType nVoxels = this->NumberOfVoxels;
+    this->HasOwn.assign(nVoxels, 1);
+    this->Counted.assign(nVoxels, 1);
+    this->Trusted.assign(nVoxels, 1);
+    if (!this->P)
+    {
+      return;
+    }
+    for (vtkIdType v = 0; v < nVoxels; ++v)
+    {
+      bool own = false;
+      int32_t first = -1;
+      int32_t firstOrder = 0;
+      for (vtkIdType e = this->Start[v]; e < this->Start[v + 1]; ++e)
+      {
+        const int32_t id = this->Keyed[e].second;
+        own = own || this->IsOwn(id);
+        const int32_t order = this->P->InputOrder ? this->P->InputOrder[id] : id;
+        if (first < 0 || order < firstOrder)
+        {
+          first = id;
+          firstOrder = order;
+        }
+      }
+      this->HasOwn[v] = own ? 1 : 0;
+      this->Counted[v] = this->IsOwn(first) ? 1 : 0;
+    }
+    std::fill(this->Trusted.begin(), this->Trusted.end(), 0);
+    for (vtkIdType v = 0; v < nVoxels; ++v)
+    {
+      if (this->HasOwn[v])
+      {
+        this->Trusted[v] = 1;
+        this->Grid.ForEachNeighbor(v, [&](vtkIdType w) { this->Trusted[w] = 1; });
+      }
+    }
+  }
+
+  // The values of the counted voxels (one process: every voxel).
+  std::vector<double> CountedValues(const std::vector<double>& values) const
+  {
+    std::vector<double> kept;
+    kept.reserve(values.size());
+    for (size_t v = 0; v < values.size(); ++v)
+    {
+      if (this->Counted[v])
+      {
+        kept.push_back(values[v]);
+      }
+    }
+    return kept;
   }
 
   // The compared quantity per voxel: its count (VOXEL_COUNTS) or its block's areal density 1/h^2
@@ -452,14 +522,23 @@ struct VoxelRun
       }
       return;
     }
+    // Each voxel's sum in ascending order of the values: a function of the voxel's points only,
+    // whatever their numbering (a piece's renumbering differs from the whole cloud's).
     std::vector<double> spacingSum(nVoxels, 0.0);
     vtkSMPTools::For(0, nVoxels, [&](vtkIdType begin, vtkIdType end) {
+      std::vector<double> values;
       for (vtkIdType v = begin; v < end; ++v)
       {
-        double sum = 0.0;
+        values.clear();
         for (vtkIdType e = this->Start[v]; e < this->Start[v + 1]; ++e)
         {
-          sum += nearest[this->Keyed[e].second];
+          values.push_back(nearest[this->Keyed[e].second]);
+        }
+        std::sort(values.begin(), values.end());
+        double sum = 0.0;
+        for (double value : values)
+        {
+          sum += value;
         }
         spacingSum[v] = sum;
       }
@@ -504,22 +583,23 @@ struct VoxelRun
   {
     if (this->Block5)
     {
-      std::vector<double> sorted(this->Level);
-      this->Reference = featurepoints::UpperMedian(sorted);
+      const std::vector<double> levels = this->CountedValues(this->Level);
+      std::vector<double> sorted(levels);
+      this->Reference = this->UpperMedian(sorted);
       // The spread from the blocks below the median only: denser regions, a minority, sit above
       // it and would widen a two-sided estimate.
       std::vector<double> below;
-      for (double x : this->Level)
+      for (double x : levels)
       {
         if (x <= this->Reference)
         {
           below.push_back(this->Reference - x);
         }
       }
-      this->Spread = featurepoints::MADToSigma * featurepoints::UpperMedian(below);
+      this->Spread = featurepoints::MADToSigma * this->UpperMedian(below);
       // A block with few points (the rim of a surface, a stray cluster) measures no density.
-      sorted = this->BlockCount;
-      this->MinimumCount = 0.5 * featurepoints::UpperMedian(sorted);
+      sorted = this->CountedValues(this->BlockCount);
+      this->MinimumCount = 0.5 * this->UpperMedian(sorted);
     }
     this->Cutoff =
       std::max((1.0 + epsilon) * this->Reference, this->Reference + sigmas * this->Spread);
@@ -537,7 +617,11 @@ struct VoxelRun
       for (vtkIdType v = begin; v < end; ++v)
       {
         bool found = false;
-        if (this->Block5)
+        if (!this->Trusted[v])
+        {
+          // A piece's outer voxels: their levels are not the cloud's, and no own point needs them.
+        }
+        else if (this->Block5)
         {
           found = this->BlockCount[v] >= this->MinimumCount && this->Level[v] > this->Cutoff;
         }
@@ -550,8 +634,15 @@ struct VoxelRun
         this->Contrast[v] = found ? 1 : 0;
       }
     });
-    const vtkIdType found = std::count(this->Contrast.begin(), this->Contrast.end(), 1);
-    if (static_cast<double>(found) < minimumFraction * static_cast<double>(nVoxels))
+    vtkIdType found = 0, counted = 0;
+    for (vtkIdType v = 0; v < nVoxels; ++v)
+    {
+      found += this->Counted[v] & this->Contrast[v];
+      counted += this->Counted[v];
+    }
+    found = this->Sum(found);
+    counted = this->Sum(counted);
+    if (static_cast<double>(found) < minimumFraction * static_cast<double>(counted))
     {
       std::fill(this->Contrast.begin(), this->Contrast.end(), 0);
       return false;
@@ -573,18 +664,47 @@ struct VoxelRun
         front.push_back(v);
       }
     }
-    while (!front.empty())
+    // Distributed runs: each process floods its trusted voxels; the voxels it reached go to
+    // every process, which floods on from those it trusts, until no process reaches a new one.
+    // A step of the flood from w to x is taken by a process that owns a point of x (x and w are
+    // trusted there), so the processes together take every step one process takes.
+    for (;;)
     {
-      const vtkIdType v = front.back();
-      front.pop_back();
-      this->Grid.ForEachNeighbor(v, [&](vtkIdType w) {
-        if (!this->Contrast[w] && this->BlockCount[w] >= this->MinimumCount &&
-          this->Level[w] > weak)
+      std::vector<uint64_t> reached;
+      while (!front.empty())
+      {
+        const vtkIdType v = front.back();
+        front.pop_back();
+        this->Grid.ForEachNeighbor(v, [&](vtkIdType w) {
+          if (!this->Contrast[w] && this->Trusted[w] &&
+            this->BlockCount[w] >= this->MinimumCount && this->Level[w] > weak)
+          {
+            this->Contrast[w] = 1;
+            front.push_back(w);
+            reached.push_back(this->Grid.Keys[w]);
+          }
+        });
+      }
+      if (!this->P)
+      {
+        return;
+      }
+      this->P->AllGather(reached);
+      if (reached.empty())
+      {
+        return;
+      }
+      const uint64_t* keys = this->Grid.Keys.data();
+      for (uint64_t key : reached)
+      {
+        const uint64_t* at = std::lower_bound(keys, keys + this->NumberOfVoxels, key);
+        const vtkIdType w = at - keys;
+        if (w < this->NumberOfVoxels && *at == key && this->Trusted[w] && !this->Contrast[w])
         {
           this->Contrast[w] = 1;
           front.push_back(w);
         }
-      });
+      }
     }
   }
 
@@ -630,12 +750,13 @@ struct VoxelRun
     contrast = 0;
     for (vtkIdType v = 0; v < this->NumberOfVoxels; ++v)
     {
-      contrast += this->Contrast[v];
+      contrast += this->Counted[v] & this->Contrast[v];
       for (vtkIdType e = this->Start[v]; e < this->Start[v + 1]; ++e)
       {
         const int32_t id = this->Keyed[e].second;
-        candidate[id] = this->Keep[v];
-        nCandidates += this->Keep[v];
+        const unsigned char kept = this->IsOwn(id) ? this->Keep[v] : 0;
+        candidate[id] = kept;
+        nCandidates += kept;
         if (voxelCount)
         {
           voxelCount[id] = this->Grid.Counts[v];
@@ -679,6 +800,7 @@ vtkIdType DensityContrast::MarkCandidates(vtkPoints* points, const unsigned char
   this->NumberOfCandidates = 0;
   this->NumberOfClampedPoints = 0;
   this->ReferenceLevel = 0.0;
+  this->RequiredHaloWidth = 0.0;
   const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
   std::fill(candidate, candidate + n, 0);
   if (voxelCount)
@@ -691,13 +813,34 @@ vtkIdType DensityContrast::MarkCandidates(vtkPoints* points, const unsigned char
     return 0;
   }
   this->VoxelSize = a;
+  const DensityContrastProcesses* processes = this->Processes;
+  if (processes)
+  {
+    this->RequiredHaloWidth = HaloWidthFor(a);
+    if (this->RequiredHaloWidth > processes->HaloWidth)
+    {
+      return 0;
+    }
+  }
 
   VoxelRun run(points, valid, a);
+  run.P = processes;
   run.PlaceGrid();
   run.KeyPoints();
   this->NumberOfClampedPoints = run.Clamped;
+  if (processes && run.Clamped > 0)
+  {
+    // Voxels clamped to the grid's border hold points from anywhere: only the whole cloud holds
+    // all of theirs.
+    this->RequiredHaloWidth = VTK_DOUBLE_MAX;
+    if (processes->HaloWidth < VTK_DOUBLE_MAX)
+    {
+      return 0;
+    }
+  }
   run.CollectVoxels();
-  this->NumberOfOccupiedVoxels = run.NumberOfVoxels;
+  this->NumberOfOccupiedVoxels =
+    run.Sum(std::accumulate(run.Counted.begin(), run.Counted.end(), vtkIdType(0)));
   run.Block5 = this->ContrastRule == BLOCK_SPACING && nearest;
   run.MeasureLevels(nearest);
   run.EstimateReference(this->DensityContrast, this->ContrastSigmas);
@@ -707,7 +850,9 @@ vtkIdType DensityContrast::MarkCandidates(vtkPoints* points, const unsigned char
     run.GrowContrast();
   }
   run.KeepNeighbors();
-  this->NumberOfCandidates = run.WriteCandidates(candidate, voxelCount, this->NumberOfContrastVoxels);
+  this->NumberOfCandidates =
+    run.Sum(run.WriteCandidates(candidate, voxelCount, this->NumberOfContrastVoxels));
+  this->NumberOfContrastVoxels = run.Sum(this->NumberOfContrastVoxels);
   if (run.Clamped > 0 && this->Reporter)
   {
     vtkWarningWithObjectMacro(this->Reporter,
@@ -724,11 +869,23 @@ bool DensityContrast::SampleShowsContrast(vtkPointCloudNeighborhoods* neighborho
   {
     return true;
   }
+  this->RequiredHaloWidth = 0.0;
+  const DensityContrastProcesses* processes = this->Processes;
   vtkPoints* points = neighborhoods->GetPoints();
   const unsigned char* valid = neighborhoods->GetValidMask();
   const vtkIdType n = neighborhoods->GetNumberOfPoints();
-  const vtkIdType m = neighborhoods->GetNumberOfValidPoints();
+  vtkIdType m = neighborhoods->GetNumberOfValidPoints();
   const double* b = neighborhoods->GetBounds();
+  if (processes)
+  {
+    vtkIdType own = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      own += valid[i] && processes->Owned[i] ? 1 : 0;
+    }
+    m = processes->Sum(own);
+    b = processes->Bounds;
+  }
   const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
     (b[5] - b[4]) * (b[5] - b[4]));
   constexpr vtkIdType MinimumSample = 8192;
@@ -742,14 +899,16 @@ bool DensityContrast::SampleShowsContrast(vtkPointCloudNeighborhoods* neighborho
   std::vector<unsigned char> sampled =
     SampleRegions(points, valid, n, origin, side, SampleModulus);
   std::vector<vtkIdType> ids;
+  vtkIdType ownSampled = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
     if (sampled[i])
     {
       ids.push_back(i);
+      ownSampled += !processes || processes->Owned[i] ? 1 : 0;
     }
   }
-  if (static_cast<vtkIdType>(ids.size()) < MinimumSample)
+  if ((processes ? processes->Sum(ownSampled) : ownSampled) < MinimumSample)
   {
     return true;
   }
@@ -759,18 +918,19 @@ bool DensityContrast::SampleShowsContrast(vtkPointCloudNeighborhoods* neighborho
   // The sample's mean spacing, as vtkPointCloudNeighborhoods measures the cloud's: coincident
   // points and isolated outliers (over 10 times the median) left out.
   std::vector<double> positive;
-  for (double v : found)
+  for (size_t r = 0; r < ids.size(); ++r)
   {
-    if (v > 0.0)
+    if (found[r] > 0.0 && (!processes || processes->Owned[ids[r]]))
     {
-      positive.push_back(v);
+      positive.push_back(found[r]);
     }
   }
-  if (positive.empty())
+  const double spacing = processes ? processes->MeanWithoutOutliers(positive)
+                                   : MeanWithoutOutliers(positive, 10.0);
+  if (!(spacing > 0.0))
   {
     return true;
   }
-  const double spacing = MeanWithoutOutliers(positive, 10.0);
   std::vector<double> nearest(n, 0.0);
   for (size_t r = 0; r < ids.size(); ++r)
   {

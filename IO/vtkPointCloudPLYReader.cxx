@@ -14,6 +14,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <vtksys/FStream.hxx>
 #include <vtksys/SystemTools.hxx>
@@ -388,8 +389,11 @@ public:
   {
   }
 
-  // Reads the vertices into `output`: points, point data and, if asked, vertex cells.
-  bool Read(vtkPolyData* output, bool createVertexCells);
+  // Reads the vertices into `output`: points, point data and, if asked, vertex cells. Piece
+  // `piece` of `pieces`: the vertices [n piece / pieces, n (piece + 1) / pieces) of a binary file
+  // whose vertex rows have a fixed size (their byte range alone is read); otherwise piece 0 gets
+  // every vertex and the other pieces none.
+  bool Read(vtkPolyData* output, bool createVertexCells, int piece = 0, int pieces = 1);
 
   std::string Error;
   std::vector<std::string> Warnings;
@@ -441,6 +445,8 @@ private:
   std::vector<int> TargetOfProperty; // -1 for a list property
   size_t PackedRowSize = 0;          // bytes of the scalar properties of one vertex
   vtkIdType Allocated = 0;           // tuples of the output arrays
+  uint64_t FirstRow = 0;             // the piece's first vertex
+  uint64_t NumberOfRows = 0;         // the piece's vertices
 };
 
 bool PLYParser::ReadHeader()
@@ -834,7 +840,8 @@ bool PLYParser::Prepare(const Element& vertex, vtkPolyData* output)
     const bool ascii = this->FileFormat == Format::Ascii;
     minRowSize += ascii ? 2 : TypeSize(p.IsList ? p.CountType : p.Type); // value and separator
   }
-  this->Allocated = static_cast<vtkIdType>(std::min(vertex.Count, remaining / minRowSize + 1));
+  this->Allocated =
+    static_cast<vtkIdType>(std::min(this->NumberOfRows, remaining / minRowSize + 1));
 
   this->Targets.clear();
   this->TargetOfProperty.assign(np, -1);
@@ -955,14 +962,18 @@ bool PLYParser::ReadBinaryVertices(const Element& vertex)
   const bool hasList = std::any_of(
     vertex.Properties.begin(), vertex.Properties.end(), [](const Property& p) { return p.IsList; });
   const size_t rowSize = this->PackedRowSize;
-  const vtkIdType n = static_cast<vtkIdType>(vertex.Count);
+  const vtkIdType n = static_cast<vtkIdType>(this->NumberOfRows);
   const vtkIdType rowsPerChunk = static_cast<vtkIdType>(std::max<size_t>(1, ChunkBytes / rowSize));
   std::vector<char> chunk(static_cast<size_t>(std::min(n, rowsPerChunk)) * rowSize);
   const uint64_t start = this->In.Position();
 
   if (!hasList)
   {
-    // CheckVertexBytes has made sure the file holds every row.
+    // CheckVertexBytes has made sure the file holds every row; a piece starts at its own.
+    if (this->FirstRow > 0 && !this->In.Skip(this->FirstRow * rowSize))
+    {
+      return this->FailEnd(vertex, 0, this->BinaryDetail(start, vertex.Count, rowSize));
+    }
     for (vtkIdType first = 0; first < n; first += rowsPerChunk)
     {
       const vtkIdType rows = std::min(rowsPerChunk, n - first);
@@ -1029,7 +1040,7 @@ bool PLYParser::ReadBinaryVertices(const Element& vertex)
 bool PLYParser::ReadAsciiVertices(const Element& vertex)
 {
   const size_t rowSize = this->PackedRowSize;
-  const vtkIdType n = static_cast<vtkIdType>(vertex.Count);
+  const vtkIdType n = static_cast<vtkIdType>(this->NumberOfRows);
   const vtkIdType rowsPerChunk = static_cast<vtkIdType>(std::max<size_t>(1, ChunkBytes / rowSize));
   std::vector<char> chunk(static_cast<size_t>(std::min(n, rowsPerChunk)) * rowSize);
   std::string_view line;
@@ -1118,7 +1129,7 @@ bool PLYParser::ReadAsciiVertices(const Element& vertex)
   return true;
 }
 
-bool PLYParser::Read(vtkPolyData* output, bool createVertexCells)
+bool PLYParser::Read(vtkPolyData* output, bool createVertexCells, int piece, int pieces)
 {
   if (!this->ReadHeader())
   {
@@ -1154,6 +1165,22 @@ bool PLYParser::Read(vtkPolyData* output, bool createVertexCells)
   {
     return false;
   }
+  this->FirstRow = 0;
+  this->NumberOfRows = vertex->Count;
+  const bool fixedRows = this->FileFormat != Format::Ascii &&
+    std::none_of(vertex->Properties.begin(), vertex->Properties.end(),
+      [](const Property& p) { return p.IsList; });
+  if (pieces > 1 && fixedRows)
+  {
+    const uint64_t n = vertex->Count, p = static_cast<uint64_t>(piece);
+    const uint64_t q = static_cast<uint64_t>(pieces);
+    this->FirstRow = n / q * p + n % q * p / q;
+    this->NumberOfRows = n / q * (p + 1) + n % q * (p + 1) / q - this->FirstRow;
+  }
+  else if (piece > 0)
+  {
+    this->NumberOfRows = 0; // piece 0 reads the whole file
+  }
   if (!this->Prepare(*vertex, output))
   {
     return false;
@@ -1166,7 +1193,7 @@ bool PLYParser::Read(vtkPolyData* output, bool createVertexCells)
   }
   if (createVertexCells)
   {
-    const vtkIdType n = static_cast<vtkIdType>(vertex->Count);
+    const vtkIdType n = static_cast<vtkIdType>(this->NumberOfRows);
     vtkSmartPointer<vtkCellArray> verts = vtkPointCloudIO::MakeVertexCells(n);
     if (!verts)
     {
@@ -1186,6 +1213,13 @@ vtkPointCloudPLYReader::vtkPointCloudPLYReader()
 vtkPointCloudPLYReader::~vtkPointCloudPLYReader()
 {
   this->SetFileName(nullptr);
+}
+
+int vtkPointCloudPLYReader::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  return 1;
 }
 
 int vtkPointCloudPLYReader::RequestData(
@@ -1217,9 +1251,17 @@ int vtkPointCloudPLYReader::RequestData(
     return fail(code, message);
   }
 
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    : 0;
+  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
   PLYParser parser(name, stream, size);
   vtkNew<vtkPolyData> cloud;
-  const bool ok = parser.Read(cloud, this->CreateVertexCells);
+  const bool ok = parser.Read(
+    cloud, this->CreateVertexCells, std::max(piece, 0), std::max(pieces, 1));
   for (const std::string& warning : parser.Warnings)
   {
     vtkWarningMacro(<< warning);

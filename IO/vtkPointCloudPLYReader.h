@@ -24,6 +24,12 @@
  * With CreateVertexCells on (default) the output has one vertex cell per point, so that it
  * renders as points.
  *
+ * Pieces (the pipeline's UPDATE_PIECE_NUMBER of UPDATE_NUMBER_OF_PIECES, as in
+ * `UpdatePiece(rank, ranks, 0)`): in a binary file whose vertex rows have a fixed size (no list
+ * property), piece p of P holds the vertices [n p / P, n (p + 1) / P) and reads only their bytes,
+ * so that each MPI process reads its own share; in other files piece 0 holds every vertex and
+ * the other pieces none. The whole file's size is still checked against the header.
+ *
  * Errors (vtkErrorMacro, error code set, empty output; never a partial cloud) name the file and
  * what is wrong: not a PLY file, an unknown format or property type, a malformed header line
  * (with its line number), no vertex element or no x/y/z, a binary file that ends before its last
@@ -71,6 +77,7 @@ protected:
   vtkPointCloudPLYReader();
   ~vtkPointCloudPLYReader() override;
 
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   char* FileName = nullptr;

@@ -40,6 +40,8 @@ namespace
 {
 // The sample of the split: about this many points of the whole cloud.
 constexpr long long SampleTarget = 100000;
+// The spacing estimate's margin for the halo width a detector asks for.
+constexpr double SpacingMargin = 1.25;
 // Cells per axis of the grid whose cells' boxes, widened by their points' reach, make the halo.
 constexpr int HaloCells = 8;
 
@@ -455,14 +457,15 @@ void LeafRegion(const std::vector<SplitNode>& nodes, int rank, double region[6])
 }
 
 // 1 for the valid points whose reach (factor times the distance to their k-th nearest point, or
-// to their nearest point at a nonzero distance if further) may leave `region`. The bound: on a
+// to their nearest point at a nonzero distance if further), or whose box of half-width `width`,
+// may leave `region`. The bound: on a
 // sparse grid of cells of side c (a sample's median k-th nearest distance: a block of 27 cells
 // mostly suffices, so the bound costs little), a point's
 // k nearest lie within the block of (2m + 1)^3 cells around its cell once the block holds k + 1
 // points at two places at least, so within sqrt(3) (m + 1) c of it.
 std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighborhoods,
   vtkPoints* points, const std::vector<vtkIdType>& valid, int k, double factor,
-  const double region[6])
+  const double region[6], double width)
 {
   const vtkIdType n = points->GetNumberOfPoints();
   std::vector<unsigned char> near(n, 0);
@@ -589,7 +592,8 @@ std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighbor
     {
       continue; // the exact reach decides
     }
-    const double bound = factor * std::sqrt(3.0) * (rings + 1) * side * (1.0 + 1e-9);
+    const double bound =
+      std::max(factor * std::sqrt(3.0) * (rings + 1) * side * (1.0 + 1e-9), width);
     const double* own = entry.second.Box;
     bool inside = true;
     for (int c = 0; c < 3 && inside; ++c)
@@ -611,6 +615,49 @@ std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighbor
 bool Finite(const double x[3])
 {
   return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+}
+
+// An estimate of the cloud's mean spacing from a sample of a piece's own points: their distance to
+// the nearest own point is at least their distance to the nearest point of the cloud, so this is
+// an estimate from above (the processes take the largest).
+double EstimateSpacing(vtkPointCloudNeighborhoods* neighborhoods, const std::vector<vtkIdType>& valid)
+{
+  std::vector<vtkIdType> sample;
+  const size_t stride = std::max<size_t>(1, valid.size() / 4096);
+  for (size_t r = 0; r < valid.size(); r += stride)
+  {
+    sample.push_back(valid[r]);
+  }
+  std::vector<int32_t> table;
+  std::vector<double> distances;
+  neighborhoods->FindNearestNeighbors(1, sample, table, &distances);
+  std::vector<double> positive;
+  for (double d : distances)
+  {
+    if (d > 0.0 && std::isfinite(d))
+    {
+      positive.push_back(d);
+    }
+  }
+  if (positive.empty())
+  {
+    return 0.0;
+  }
+  // The mean without isolated points (over 10 times the median), as the detectors take it.
+  std::vector<double> sorted(positive);
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double limit = 10.0 * sorted[sorted.size() / 2];
+  double sum = 0.0;
+  size_t count = 0;
+  for (double d : positive)
+  {
+    if (d <= limit)
+    {
+      sum += d;
+      ++count;
+    }
+  }
+  return sum / static_cast<double>(count);
 }
 // Every process's `local` values, concatenated in process order, on every process; `lengths` and
 // `offsets` receive where each process's values lie.
@@ -864,216 +911,252 @@ int vtkDistributedFeaturePoints::RequestData(
   }
   this->Distributed = true;
 
-  // 3. The reach of each own point, and the boxes of the halo.
-  std::vector<double> boxes; // 6 per box: lo x, lo y, lo z, hi x, hi y, hi z
+  // The halo width the detector needs beyond its neighbourhoods (the paper's method's voxel
+  // blocks, in units of the cloud's mean spacing): taken from an estimate of the spacing from
+  // above, with a margin. A run that finds it too narrow says how wide it must be (the same on
+  // every process), and the halo is built again.
+  const double widthPerSpacing = detector->GetHaloWidthFor(1.0);
+  double width = 0.0;
+  Rows piece;
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  vtkSmartPointer<vtkPolyData> pieceData;
+  vtkPolyData* result = nullptr;
+  for (int attempt = 0;; ++attempt)
   {
-    vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
-    neighborhoods->Build(own.Points);
-    const std::vector<vtkIdType> valid = neighborhoods->GetValidIds();
-    const double factor = std::ldexp(1.0, levels) - 1.0;
-    double region[6];
-    LeafRegion(nodes, rank, region);
-    // Only the points whose reach may leave this process's region add to the halo: a cheap upper
-    // bound of the reach rules out the others, and the rest get the exact one.
-    const std::vector<unsigned char> nearBorder =
-      NearRegionBorder(neighborhoods, own.Points, valid, k, factor, region);
-    std::vector<vtkIdType> ids;
-    for (vtkIdType i : valid)
+    // 3. The reach of each own point, and the boxes of the halo.
+    std::vector<double> boxes; // 6 per box: lo x, lo y, lo z, hi x, hi y, hi z
     {
-      if (nearBorder[i])
+      vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+      neighborhoods->Build(own.Points);
+      const std::vector<vtkIdType> valid = neighborhoods->GetValidIds();
+      if (attempt == 0 && widthPerSpacing > 0.0)
       {
-        ids.push_back(i);
+        double local = EstimateSpacing(neighborhoods, valid), largest = 0.0;
+        controller->AllReduce(&local, &largest, 1, vtkCommunicator::MAX_OP);
+        width = detector->GetHaloWidthFor(SpacingMargin * largest);
       }
-    }
-    std::vector<int32_t> table;
-    neighborhoods->FindNearestNeighbors(k, ids, table);
-    const double* b = neighborhoods->GetBounds();
-    double cell[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      cell[c] = std::max((b[2 * c + 1] - b[2 * c]) / HaloCells, 1e-300);
-    }
-    std::vector<double> cellBox(6 * HaloCells * HaloCells * HaloCells);
-    for (size_t c = 0; c < cellBox.size(); c += 6)
-    {
-      std::fill_n(cellBox.begin() + c, 3, VTK_DOUBLE_MAX);
-      std::fill_n(cellBox.begin() + c + 3, 3, -VTK_DOUBLE_MAX);
-    }
-    double x[3], y[3];
-    for (size_t r = 0; r < ids.size(); ++r)
-    {
-      const vtkIdType i = ids[r];
-      own.Points->GetPoint(i, x);
-      // The distance to the k-th nearest own point, or, where the k nearest all coincide with
-      // the point, to the nearest own point at a nonzero distance (the mean spacing needs it).
-      // Unbounded when there is none.
-      double radius = VTK_DOUBLE_MAX;
-      const int32_t last = table[r * k + k - 1];
-      if (last >= 0)
+      const double factor = std::ldexp(1.0, levels) - 1.0;
+      double region[6];
+      LeafRegion(nodes, rank, region);
+      // Only the points whose reach may leave this process's region add to the halo: a cheap upper
+      // bound of the reach rules out the others, and the rest get the exact one.
+      const std::vector<unsigned char> nearBorder =
+        NearRegionBorder(neighborhoods, own.Points, valid, k, factor, region, width);
+      std::vector<vtkIdType> ids;
+      for (vtkIdType i : valid)
       {
-        own.Points->GetPoint(last, y);
-        radius = std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
-      }
-      for (vtkIdType kk = 4 * static_cast<vtkIdType>(k); radius == 0.0; kk *= 4)
-      {
-        const vtkIdType n = static_cast<vtkIdType>(valid.size()) - 1;
-        std::vector<int32_t> row;
-        neighborhoods->FindNearestNeighbors(static_cast<int>(std::min(kk, n)), { i }, row);
-        radius = VTK_DOUBLE_MAX;
-        for (int32_t j : row)
+        if (nearBorder[i])
         {
-          own.Points->GetPoint(j, y);
-          const double d = j >= 0 ? std::sqrt(vtkMath::Distance2BetweenPoints(x, y)) : 0.0;
-          if (d > 0.0)
-          {
-            radius = d;
-            break;
-          }
-        }
-        if (radius == VTK_DOUBLE_MAX && kk < n)
-        {
-          radius = 0.0; // look further
+          ids.push_back(i);
         }
       }
-      const double reach = radius == VTK_DOUBLE_MAX ? radius : factor * radius * (1.0 + 1e-12);
-      int index = 0;
-      for (int c = 2; c >= 0; --c)
-      {
-        const int j = std::min(HaloCells - 1,
-          std::max(0, static_cast<int>(std::floor((x[c] - b[2 * c]) / cell[c]))));
-        index = index * HaloCells + j;
-      }
-      double* box = cellBox.data() + 6 * index;
+      std::vector<int32_t> table;
+      neighborhoods->FindNearestNeighbors(k, ids, table);
+      const double* b = neighborhoods->GetBounds();
+      double cell[3];
       for (int c = 0; c < 3; ++c)
       {
-        box[c] = std::min(box[c], reach == VTK_DOUBLE_MAX ? -VTK_DOUBLE_MAX : x[c] - reach);
-        box[3 + c] = std::max(box[3 + c], reach == VTK_DOUBLE_MAX ? VTK_DOUBLE_MAX : x[c] + reach);
+        cell[c] = std::max((b[2 * c + 1] - b[2 * c]) / HaloCells, 1e-300);
       }
-    }
-    for (size_t c = 0; c < cellBox.size(); c += 6)
-    {
-      if (cellBox[c] <= cellBox[c + 3])
+      std::vector<double> cellBox(6 * HaloCells * HaloCells * HaloCells);
+      for (size_t c = 0; c < cellBox.size(); c += 6)
       {
-        boxes.insert(boxes.end(), cellBox.begin() + c, cellBox.begin() + c + 6);
+        std::fill_n(cellBox.begin() + c, 3, VTK_DOUBLE_MAX);
+        std::fill_n(cellBox.begin() + c + 3, 3, -VTK_DOUBLE_MAX);
       }
-    }
-  }
-  std::vector<vtkIdType> lengths, offsets;
-  const std::vector<double> allBoxes = AllGatherValues(controller, boxes, lengths, offsets);
-
-  // 4. The halo: each own point that falls in another process's boxes goes to it.
-  std::vector<std::vector<vtkIdType>> send(nProcs);
-  {
-    double x[3];
-    for (int q = 0; q < nProcs; ++q)
-    {
-      if (q == rank || lengths[q] == 0)
+      double x[3], y[3];
+      for (size_t r = 0; r < ids.size(); ++r)
       {
-        continue;
-      }
-      const double* qb = allBoxes.data() + offsets[q];
-      const vtkIdType nb = lengths[q] / 6;
-      double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-      double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-      for (vtkIdType j = 0; j < nb; ++j)
-      {
+        const vtkIdType i = ids[r];
+        own.Points->GetPoint(i, x);
+        // The distance to the k-th nearest own point, or, where the k nearest all coincide with
+        // the point, to the nearest own point at a nonzero distance (the mean spacing needs it).
+        // Unbounded when there is none.
+        double radius = VTK_DOUBLE_MAX;
+        const int32_t last = table[r * k + k - 1];
+        if (last >= 0)
+        {
+          own.Points->GetPoint(last, y);
+          radius = std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
+        }
+        for (vtkIdType kk = 4 * static_cast<vtkIdType>(k); radius == 0.0; kk *= 4)
+        {
+          const vtkIdType n = static_cast<vtkIdType>(valid.size()) - 1;
+          std::vector<int32_t> row;
+          neighborhoods->FindNearestNeighbors(static_cast<int>(std::min(kk, n)), { i }, row);
+          radius = VTK_DOUBLE_MAX;
+          for (int32_t j : row)
+          {
+            own.Points->GetPoint(j, y);
+            const double d = j >= 0 ? std::sqrt(vtkMath::Distance2BetweenPoints(x, y)) : 0.0;
+            if (d > 0.0)
+            {
+              radius = d;
+              break;
+            }
+          }
+          if (radius == VTK_DOUBLE_MAX && kk < n)
+          {
+            radius = 0.0; // look further
+          }
+        }
+        const double reach = radius == VTK_DOUBLE_MAX
+          ? radius
+          : std::max(factor * radius * (1.0 + 1e-12), width);
+        int index = 0;
+        for (int c = 2; c >= 0; --c)
+        {
+          const int j = std::min(HaloCells - 1,
+            std::max(0, static_cast<int>(std::floor((x[c] - b[2 * c]) / cell[c]))));
+          index = index * HaloCells + j;
+        }
+        double* box = cellBox.data() + 6 * index;
         for (int c = 0; c < 3; ++c)
         {
-          lo[c] = std::min(lo[c], qb[6 * j + c]);
-          hi[c] = std::max(hi[c], qb[6 * j + 3 + c]);
+          box[c] = std::min(box[c], reach == VTK_DOUBLE_MAX ? -VTK_DOUBLE_MAX : x[c] - reach);
+          box[3 + c] = std::max(box[3 + c], reach == VTK_DOUBLE_MAX ? VTK_DOUBLE_MAX : x[c] + reach);
         }
       }
-      auto inside = [](const double* p, const double* l, const double* h) {
-        return p[0] >= l[0] && p[0] <= h[0] && p[1] >= l[1] && p[1] <= h[1] && p[2] >= l[2] &&
-          p[2] <= h[2];
-      };
-      for (vtkIdType i = 0; i < own.Size(); ++i)
+      for (size_t c = 0; c < cellBox.size(); c += 6)
       {
-        own.Points->GetPoint(i, x);
-        if (!Finite(x) || !inside(x, lo, hi))
+        if (cellBox[c] <= cellBox[c + 3])
+        {
+          boxes.insert(boxes.end(), cellBox.begin() + c, cellBox.begin() + c + 6);
+        }
+      }
+    }
+    std::vector<vtkIdType> lengths, offsets;
+    const std::vector<double> allBoxes = AllGatherValues(controller, boxes, lengths, offsets);
+
+    // 4. The halo: each own point that falls in another process's boxes goes to it.
+    std::vector<std::vector<vtkIdType>> send(nProcs);
+    {
+      double x[3];
+      for (int q = 0; q < nProcs; ++q)
+      {
+        if (q == rank || lengths[q] == 0)
         {
           continue;
         }
+        const double* qb = allBoxes.data() + offsets[q];
+        const vtkIdType nb = lengths[q] / 6;
+        double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+        double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
         for (vtkIdType j = 0; j < nb; ++j)
         {
-          if (inside(x, qb + 6 * j, qb + 6 * j + 3))
+          for (int c = 0; c < 3; ++c)
           {
-            send[q].push_back(i);
-            break;
+            lo[c] = std::min(lo[c], qb[6 * j + c]);
+            hi[c] = std::max(hi[c], qb[6 * j + 3 + c]);
+          }
+        }
+        auto inside = [](const double* p, const double* l, const double* h) {
+          return p[0] >= l[0] && p[0] <= h[0] && p[1] >= l[1] && p[1] <= h[1] && p[2] >= l[2] &&
+            p[2] <= h[2];
+        };
+        for (vtkIdType i = 0; i < own.Size(); ++i)
+        {
+          own.Points->GetPoint(i, x);
+          if (!Finite(x) || !inside(x, lo, hi))
+          {
+            continue;
+          }
+          for (vtkIdType j = 0; j < nb; ++j)
+          {
+            if (inside(x, qb + 6 * j, qb + 6 * j + 3))
+            {
+              send[q].push_back(i);
+              break;
+            }
           }
         }
       }
     }
-  }
-  Rows halo;
-  ok = Exchange(comm, layout, own, send, halo) ? 1 : 0;
-  controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
-  if (!allOk)
-  {
-    vtkErrorMacro("Cannot build the halos: a piece holds more than 2 GB.");
-    return 0;
-  }
-  long long figures[2] = { own.Size(), halo.Size() };
-  std::vector<long long> allFigures(2 * nProcs);
-  controller->AllGather(figures, allFigures.data(), 2);
-  this->OwnedCounts.resize(nProcs);
-  this->HaloCounts.resize(nProcs);
-  for (int q = 0; q < nProcs; ++q)
-  {
-    this->OwnedCounts[q] = static_cast<vtkIdType>(allFigures[2 * q]);
-    this->HaloCounts[q] = static_cast<vtkIdType>(allFigures[2 * q + 1]);
-  }
+    Rows halo;
+    ok = Exchange(comm, layout, own, send, halo) ? 1 : 0;
+    controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
+    if (!allOk)
+    {
+      vtkErrorMacro("Cannot build the halos: a piece holds more than 2 GB.");
+      return 0;
+    }
+    long long figures[2] = { own.Size(), halo.Size() };
+    std::vector<long long> allFigures(2 * nProcs);
+    controller->AllGather(figures, allFigures.data(), 2);
+    this->OwnedCounts.resize(nProcs);
+    this->HaloCounts.resize(nProcs);
+    for (int q = 0; q < nProcs; ++q)
+    {
+      this->OwnedCounts[q] = static_cast<vtkIdType>(allFigures[2 * q]);
+      this->HaloCounts[q] = static_cast<vtkIdType>(allFigures[2 * q + 1]);
+    }
 
-  // 5. The piece: own points and halo in global id order, the halo flagged.
-  Rows piece;
-  vtkNew<vtkUnsignedCharArray> ghosts;
-  {
-    const vtkIdType n = own.Size() + halo.Size();
-    std::vector<std::pair<long long, vtkIdType>> order; // (gid, row; halo rows after own rows)
-    order.reserve(n);
-    for (vtkIdType i = 0; i < own.Size(); ++i)
+    // 5. The piece: own points and halo in global id order, the halo flagged.
+    piece = Rows();
     {
-      order.emplace_back(own.Gid[i], i);
+      const vtkIdType n = own.Size() + halo.Size();
+      std::vector<std::pair<long long, vtkIdType>> order; // (gid, row; halo rows after own rows)
+      order.reserve(n);
+      for (vtkIdType i = 0; i < own.Size(); ++i)
+      {
+        order.emplace_back(own.Gid[i], i);
+      }
+      for (vtkIdType i = 0; i < halo.Size(); ++i)
+      {
+        order.emplace_back(halo.Gid[i], own.Size() + i);
+      }
+      std::sort(order.begin(), order.end());
+      piece.Allocate(layout, n);
+      ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+      ghosts->SetNumberOfValues(n);
+      std::vector<unsigned char> row(layout.RowBytes());
+      for (vtkIdType j = 0; j < n; ++j)
+      {
+        const vtkIdType i = order[j].second;
+        const bool isHalo = i >= own.Size();
+        (isHalo ? halo : own).Pack(isHalo ? i - own.Size() : i, row.data());
+        piece.Unpack(j, row.data());
+        ghosts->SetValue(j, isHalo ? vtkDataSetAttributes::DUPLICATEPOINT : 0);
+      }
     }
-    for (vtkIdType i = 0; i < halo.Size(); ++i)
-    {
-      order.emplace_back(halo.Gid[i], own.Size() + i);
-    }
-    std::sort(order.begin(), order.end());
-    piece.Allocate(layout, n);
-    ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
-    ghosts->SetNumberOfValues(n);
-    std::vector<unsigned char> row(layout.RowBytes());
-    for (vtkIdType j = 0; j < n; ++j)
-    {
-      const vtkIdType i = order[j].second;
-      const bool isHalo = i >= own.Size();
-      (isHalo ? halo : own).Pack(isHalo ? i - own.Size() : i, row.data());
-      piece.Unpack(j, row.data());
-      ghosts->SetValue(j, isHalo ? vtkDataSetAttributes::DUPLICATEPOINT : 0);
-    }
-  }
-  halo = Rows();
-  vtkSmartPointer<vtkPolyData> pieceData = piece.ToPolyData();
-  pieceData->GetPointData()->AddArray(ghosts);
+    halo = Rows();
+    pieceData = piece.ToPolyData();
+    pieceData->GetPointData()->AddArray(ghosts);
 
-  // 6. The detector on the piece, its cloud-wide figures reduced over the processes.
-  vtkMultiProcessController* saved = detector->GetController();
-  if (saved)
-  {
-    saved->Register(this);
+    // 6. The detector on the piece, its cloud-wide figures reduced over the processes.
+    vtkMultiProcessController* saved = detector->GetController();
+    if (saved)
+    {
+      saved->Register(this);
+    }
+    detector->SetController(controller);
+    detector->SetOutputFeaturesOnly(false);
+    detector->SetHaloWidth(width);
+    detector->SetInputData(pieceData);
+    detector->Update();
+    detector->SetHaloWidth(0.0);
+    detector->SetController(saved);
+    detector->SetOutputFeaturesOnly(featuresOnly);
+    if (saved)
+    {
+      saved->UnRegister(this);
+    }
+    result = detector->GetOutput();
+    double required = detector->GetRequiredHaloWidth(), widest = 0.0;
+    controller->AllReduce(&required, &widest, 1, vtkCommunicator::MAX_OP);
+    if (!(widest > width))
+    {
+      break;
+    }
+    // At most three shortfalls: the quick screen's, the voxel filter's, clamped points'.
+    if (attempt >= 3)
+    {
+      vtkErrorMacro(<< "The detector needs a halo of width " << widest << ", more than the "
+                    << width << " it was given.");
+      return 0;
+    }
+    width = widest; // the estimate fell short: the halo again, as wide as the run said
   }
-  detector->SetController(controller);
-  detector->SetOutputFeaturesOnly(false);
-  detector->SetInputData(pieceData);
-  detector->Update();
-  detector->SetController(saved);
-  detector->SetOutputFeaturesOnly(featuresOnly);
-  if (saved)
-  {
-    saved->UnRegister(this);
-  }
-  vtkPolyData* result = detector->GetOutput();
   this->FindReplacedArrays(pieceData, result);
 
   // 7. The own points' results.

@@ -18,6 +18,11 @@
  *    above; a neighbour j of i lies within r_i and its own k nearest within 2 r_i of j, so the
  *    reach is (2^L - 1) r_i. The reaches, over the cells of an 8x8x8 grid on the process's box,
  *    give a list of boxes that every other process fills with its points that fall in them.
+ *    A detector that also needs whole regions around its points (GetHaloWidthFor(): the paper's
+ *    method's voxel blocks) gets boxes at least that wide, for a mean spacing estimated from
+ *    above (a sample of each piece's distances to the nearest own point, plus 25 %); when the
+ *    run finds the width short (GetRequiredHaloWidth()), the halo is built again that wide and
+ *    the detector runs again.
  * 3. Runs the detector on its own points and the halo (ordered by global id, the halo flagged in
  *    `vtkGhostType`), with the Controller set: the detector takes every cloud-wide figure over all
  *    processes' own points.

@@ -25,6 +25,7 @@
 #include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointCloudIO.h"
+#include "vtkPointCloudPLYReader.h"
 #include "vtkPointCloudReader.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -51,6 +52,7 @@
 #include "vtkDistributedFeaturePoints.h"
 #include "vtkMPI.h"
 #include "vtkMPIController.h"
+#include "vtkXMLPPolyDataWriter.h"
 #include "vtkMultiProcessController.h"
 #endif
 
@@ -68,6 +70,7 @@
 #include <string>
 #include <thread>
 #include <unistd.h> // isatty, and _exit in the signal handler (async-signal-safe)
+#include <numeric>
 #include <vector>
 
 #ifndef FEATUREPOINTS_VERSION
@@ -473,7 +476,9 @@ void PrintHelp()
     "        formats 0-10, uncompressed: LAZ is not supported in this build, it has no LASzip)\n"
     "OUTPUT  %s (VTP/VTK: every array; PLY: coordinates and every\n"
     "        numeric array as vertex properties; CSV: a header line, then one line per point;\n"
-    "        PCD: binary, every numeric array as a field)\n"
+    "        PCD: binary, every numeric array as a field); under mpiexec -n N also .pvtp:\n"
+    "        each process writes its piece (OUTPUT_<rank>.vtp beside it, points in input\n"
+    "        order, their input ids in GlobalPointIds)\n"
     "\n"
     "General options:\n"
     "  --method NAME         the method (default %s):\n",
@@ -1352,13 +1357,12 @@ public:
   {
     if (Rank != 0)
     {
-      // Another process of a distributed run: its share of the work, nothing on the terminal or
-      // in the files (process 0 reads, writes and reports).
+      // Another process of a distributed run: its share of the reading (a binary PLY file) and of
+      // the work, nothing on the terminal or in the files (process 0 writes and reports).
       this->SetThreads();
-      auto empty = vtkSmartPointer<vtkPolyData>::New();
-      empty->SetPoints(vtkNew<vtkPoints>());
-      this->Cloud = empty;
+      this->ReadCloud();
       this->Extract();
+      this->WritePieces();
       return ExitSuccess;
     }
     this->CheckFiles();
@@ -1368,7 +1372,10 @@ public:
     this->Extract();
     this->ExtractCurves();
     this->Render();
-    this->WriteFiles();
+    if (!this->WritePieces())
+    {
+      this->WriteFiles();
+    }
     if (!Quiet)
     {
       this->PrintSummary();
@@ -1390,7 +1397,11 @@ private:
           (inExt.empty() ? std::string("(none)") : "'." + inExt + "'") +
           "; readable: " + vtkPointCloudIO::GetReadableExtensions());
     }
-    if (!vtkPointCloudIO::CanWrite(outExt))
+    if (outExt == "pvtp")
+    {
+      this->CheckPieces();
+    }
+    else if (!vtkPointCloudIO::CanWrite(outExt))
     {
       Fail(ExitUsage, s.Output + ": cannot tell the output format from the extension " +
           (outExt.empty() ? std::string("(none)") : "'." + outExt + "'") +
@@ -1422,6 +1433,76 @@ private:
       Fail(ExitFailure, s.Screenshot + ": cannot render: this VTK renders through X and no "
                                        "display is set (run under xvfb-run -a)");
     }
+  }
+
+  // OUT.pvtp (under mpiexec): every process writes its own points; the picture and the curves
+  // need the whole cloud on one process.
+  void CheckPieces() const
+  {
+    const Settings& s = this->S;
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (!Processes)
+#endif
+    {
+      Fail(ExitUsage, s.Output + ": a parallel .pvtp output is written by several processes: run "
+                                 "under mpiexec -n N (N > 1), or write a .vtp file");
+    }
+    if (!s.Screenshot.empty() || !s.Lines.empty())
+    {
+      Fail(ExitUsage, s.Output + ": --screenshot and --lines need the whole result on one "
+                                 "process: not with a parallel .pvtp output");
+    }
+  }
+
+  // OUT.pvtp: each process writes its piece of the result (its own points, in input order, with
+  // their input indices in `GlobalPointIds`), process 0 the .pvtp file that lists the pieces.
+  // False (nothing written) for any other output.
+  bool WritePieces()
+  {
+#ifdef FEATUREPOINTS_HAVE_MPI
+    const Settings& s = this->S;
+    if (!Processes || vtkPointCloudIO::GetExtension(s.Output) != "pvtp")
+    {
+      return false;
+    }
+    this->Meter->Stage("writing");
+    const auto start = Clock::now();
+    vtkSmartPointer<vtkPolyData> written = this->Result;
+    if (s.FeaturesOnly)
+    {
+      written = vtkSmartPointer<vtkPolyData>::New();
+      vtkFeaturePointDetector::SelectFeaturePoints(this->Result,
+        vtkUnsignedCharArray::SafeDownCast(this->Result->GetPointData()->GetArray("FeatureMask")),
+        written);
+    }
+    const int nProcs = Processes->GetNumberOfProcesses();
+    vtkNew<vtkXMLPPolyDataWriter> writer;
+    writer->SetController(Processes);
+    writer->SetFileName(s.Output.c_str());
+    writer->SetNumberOfPieces(nProcs);
+    writer->SetStartPiece(Rank);
+    writer->SetEndPiece(Rank);
+    writer->SetDataModeToAppended();
+    writer->SetInputData(written);
+    vtkNew<ErrorFlag> writeError;
+    writer->AddObserver(vtkCommand::ErrorEvent, writeError);
+    const int ok = writer->Write() == 1 && writeError->Message.empty() ? 1 : 0;
+    int allOk = 0;
+    Processes->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
+    this->Meter->Finish();
+    if (!ok)
+    {
+      Fail(ExitFailure, s.Output + ": cannot write this process's piece: " + writeError->Message);
+    }
+    if (!allOk && Rank == 0)
+    {
+      Fail(ExitFailure, s.Output + ": another process could not write its piece");
+    }
+    this->Times.emplace_back("write", Seconds(start));
+    return true;
+#else
+    return false;
+#endif
   }
 
   // Any signal that ends the program removes the temporary files first (SIGPIPE: a closed
@@ -1461,12 +1542,90 @@ private:
     vtkSMPTools::Initialize(std::min(this->S.Threads, cores));
   }
 
+  // Under mpiexec, a binary PLY file is read by every process, each its share of the vertex rows
+  // (their byte range); true when that was done (its own piece is then this process's cloud).
+  // Other files are read by process 0 alone (the other processes hold no point), as is a cloud
+  // whose extent needs a scaled frame (its exponent is taken on the whole cloud).
+  bool ReadPiece()
+  {
+#ifdef FEATUREPOINTS_HAVE_MPI
+    const Settings& s = this->S;
+    if (!Processes || vtkPointCloudIO::GetExtension(s.Input) != "ply")
+    {
+      return false;
+    }
+    vtkNew<vtkPointCloudPLYReader> reader;
+    reader->SetFileName(s.Input.c_str());
+    vtkNew<vtkCallbackCommand> keepError; // the reader's error is reported below, once
+    reader->AddObserver(vtkCommand::ErrorEvent, keepError);
+    reader->UpdatePiece(Rank, Processes->GetNumberOfProcesses(), 0);
+    if (reader->GetErrorCode() != vtkErrorCode::NoError)
+    {
+      Fail(ExitFailure, reader->GetErrorMessage());
+    }
+    vtkPolyData* piece = reader->GetOutput();
+    // Points of the pieces before this one: where this piece starts in the file.
+    const int nProcs = Processes->GetNumberOfProcesses();
+    long long count = piece->GetNumberOfPoints();
+    std::vector<long long> counts(nProcs, 0);
+    Processes->AllGather(&count, counts.data(), 1);
+    const long long first = std::accumulate(counts.begin(), counts.begin() + Rank, 0LL);
+    this->TotalPoints = static_cast<vtkIdType>(std::accumulate(counts.begin(), counts.end(), 0LL));
+    this->FirstPoint = static_cast<vtkIdType>(first);
+    double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+    double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    double x[3];
+    for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+    {
+      piece->GetPoint(i, x);
+      for (int c = 0; c < 3; ++c)
+      {
+        lo[c] = std::min(lo[c], x[c]); // NaN never wins a comparison: the check below finds it
+        hi[c] = std::max(hi[c], x[c]);
+      }
+    }
+    double globalLo[3], globalHi[3];
+    Processes->AllReduce(lo, globalLo, 3, vtkCommunicator::MIN_OP);
+    Processes->AllReduce(hi, globalHi, 3, vtkCommunicator::MAX_OP);
+    const double extent = std::max(
+      { globalHi[0] - globalLo[0], globalHi[1] - globalLo[1], globalHi[2] - globalLo[2] });
+    if (this->TotalPoints > 0 && extent > 0.0 &&
+      (extent < std::ldexp(1.0, -64) || extent > std::ldexp(1.0, 64)))
+    {
+      return false; // a scaled frame, decided on the whole cloud
+    }
+    this->Cloud = piece;
+    return true;
+#else
+    return false;
+#endif
+  }
+
   // The input cloud, which must hold points, all of them finite.
   void ReadCloud()
   {
     const Settings& s = this->S;
     this->Meter->Stage("reading");
     const auto start = Clock::now();
+    if (this->ReadPiece())
+    {
+      this->ByPieces = true;
+      this->Meter->Finish();
+      this->Times.emplace_back("read", Seconds(start));
+      if (this->TotalPoints == 0 && Rank == 0)
+      {
+        Fail(ExitFailure, s.Input + ": the file holds no point");
+      }
+      this->CheckFinite(this->FirstPoint);
+      return;
+    }
+    if (Rank != 0)
+    {
+      auto empty = vtkSmartPointer<vtkPolyData>::New();
+      empty->SetPoints(vtkNew<vtkPoints>());
+      this->Cloud = empty;
+      return;
+    }
     this->Reader->SetFileName(s.Input.c_str());
     this->Reader->AddObserver(vtkCommand::ProgressEvent, this->Meter);
     vtkNew<vtkCallbackCommand> keepError; // the reader's error is reported below, once
@@ -1479,11 +1638,18 @@ private:
     }
     this->Cloud = this->Reader->GetOutput();
     this->Times.emplace_back("read", Seconds(start));
-    const vtkIdType n = this->Cloud->GetNumberOfPoints();
-    if (n == 0)
+    this->TotalPoints = this->Cloud->GetNumberOfPoints();
+    if (this->TotalPoints == 0)
     {
       Fail(ExitFailure, s.Input + ": the file holds no point");
     }
+    this->CheckFinite(0);
+  }
+
+  // Every point of the cloud (the piece that starts at point `first` of the file) is finite.
+  void CheckFinite(vtkIdType first) const
+  {
+    const vtkIdType n = this->Cloud->GetNumberOfPoints();
     for (vtkIdType i = 0; i < n; ++i)
     {
       double x[3];
@@ -1491,8 +1657,9 @@ private:
       if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
       {
         std::ostringstream m;
-        m << s.Input << ": point " << i << " (counting from 0) has a non-finite coordinate ("
-          << x[0] << ", " << x[1] << ", " << x[2] << ")";
+        m << this->S.Input << ": point " << first + i
+          << " (counting from 0) has a non-finite coordinate (" << x[0] << ", " << x[1] << ", "
+          << x[2] << ")";
         Fail(ExitFailure, m.str());
       }
     }
@@ -1509,7 +1676,8 @@ private:
       value.first->Apply(this->Filter, value.second);
     }
     this->Filter->SetOutputFeaturesOnly(false); // the picture needs every point; see WriteFiles
-    const int exponent = ScaledFrameExponent(this->Cloud);
+    // Read by pieces: the whole cloud's extent needs no scaled frame (see ReadPiece).
+    const int exponent = this->ByPieces ? 0 : ScaledFrameExponent(this->Cloud);
     if (exponent != 0)
     {
       LengthUnit = std::ldexp(1.0, -exponent);
@@ -1539,18 +1707,27 @@ private:
 #ifdef FEATUREPOINTS_HAVE_MPI
     if (Processes)
     {
-      // Process 0 holds the cloud: the driver splits it, each process scores its piece, and the
-      // result comes back to process 0 in the input's order.
+      // Each process holds its share of the file (binary PLY), or process 0 the whole cloud: the
+      // driver splits it in space, each process scores its piece, and the result comes back to
+      // process 0 in the input's order.
       this->Driver = vtkSmartPointer<vtkDistributedFeaturePoints>::New();
       this->Driver->SetController(Processes);
       this->Driver->SetDetector(this->Filter);
       this->Driver->SetInputData(this->Filter->GetInputDataObject(0, 0));
-      this->Driver->GatherOutputOn();
+      // A .pvtp output: each process keeps its own points (in input order) and writes them.
+      const bool pieces = vtkPointCloudIO::GetExtension(s.Output) == "pvtp";
+      if (pieces && exponent != 0)
+      {
+        Fail(ExitFailure, s.Input + ": the cloud's extent needs a scaled frame, which a parallel "
+                                    ".pvtp output does not take: write a .vtp file");
+      }
+      this->Driver->SetGatherOutput(!pieces);
       this->Driver->AddObserver(vtkCommand::ErrorEvent, filterError);
       this->Driver->Update();
       this->Meter->Finish();
       if (Rank != 0)
       {
+        this->Result = this->Driver->GetOutput();
         return;
       }
       this->Times.emplace_back("extract", Seconds(start));
@@ -1635,7 +1812,7 @@ private:
     }
     std::ostringstream caption;
     caption << this->M->Name << ": " << this->Filter->GetNumberOfFeaturePoints()
-            << " feature points (red) of " << this->Cloud->GetNumberOfPoints() << ", "
+            << " feature points (red) of " << this->TotalPoints << ", "
             << this->Filter->GetScoreArrayName() << " > " << std::setprecision(4)
             << this->Filter->GetThresholdUsed();
     if (!std::isnan(this->Grown))
@@ -1726,7 +1903,7 @@ private:
   {
     const Settings& s = this->S;
     vtkFeaturePointDetector* filter = this->Filter;
-    const vtkIdType n = this->Cloud->GetNumberOfPoints();
+    const vtkIdType n = this->TotalPoints;
     const vtkIdType features = filter->GetNumberOfFeaturePoints();
     std::printf("input       %s: %lld points\n", s.Input.c_str(), static_cast<long long>(n));
     std::printf("method      %s, mean spacing %.6g%s\n", this->M->Name,
@@ -1783,7 +1960,8 @@ private:
 #ifdef FEATUREPOINTS_HAVE_MPI
     if (this->Driver)
     {
-      std::printf("ranks       %d%s\n", this->Driver->GetNumberOfRanks(),
+      std::printf("ranks       %d, the input read %s%s\n", this->Driver->GetNumberOfRanks(),
+        this->ByPieces ? "by every rank (its share of the vertex rows)" : "by rank 0",
         this->Driver->GetDistributed()
           ? ""
           : " (run on rank 0 alone: this method with these options is not distributed yet, or the "
@@ -1803,7 +1981,10 @@ private:
   vtkNew<Progress> Meter; // progress on the terminal
   std::vector<std::pair<std::string, double>> Times;
   vtkNew<vtkPointCloudReader> Reader;
-  vtkSmartPointer<vtkPointSet> Cloud;
+  vtkSmartPointer<vtkPointSet> Cloud; // under mpiexec: this process's piece
+  vtkIdType TotalPoints = 0;          // the whole cloud's points
+  vtkIdType FirstPoint = 0;           // where this process's piece starts in the file
+  bool ByPieces = false;              // each process read its share of the file
   vtkSmartPointer<vtkFeaturePointDetector> Filter;
 #ifdef FEATUREPOINTS_HAVE_MPI
   vtkSmartPointer<vtkDistributedFeaturePoints> Driver;

@@ -12,7 +12,8 @@ common=(cmake g++ make libeigen3-dev liblzf-dev xvfb xauth mpi-default-dev openm
 if [ "${1:-}" = "--paraview" ]; then
   # paraview-dev's CMake package finds Qt 5 and the system libraries its bundled VTK was built
   # with, but depends on none of their -dev packages: they are listed here.
-  packages=("${common[@]}" paraview-dev python3-paraview
+  # paraview: pvbatch (paraview-dev depends on it; listed for the plugin's pvbatch tests).
+  packages=("${common[@]}" paraview paraview-dev python3-paraview
     qtbase5-dev qttools5-dev libqt5svg5-dev libqt5opengl5-dev qtxmlpatterns5-dev-tools
     libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libboost-dev
     libdouble-conversion-dev libexpat1-dev libfreetype6-dev libgdal-dev libgl-dev libgl2ps-dev

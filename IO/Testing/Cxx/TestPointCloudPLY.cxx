@@ -643,6 +643,54 @@ void TestErrors()
     "unwritable path: code %lu, message %s", w.Code, w.Message.c_str());
   std::printf("%-34s %s\n", "unwritable path:", w.Message.substr(Folder.size() + 1).c_str());
 }
+// Pieces (MPI processes): a binary file's pieces hold consecutive shares of the vertices, read
+// from their byte ranges, and together the whole cloud in order; an ASCII file goes to piece 0.
+void TestPieces()
+{
+  vtkSmartPointer<vtkPolyData> cloud = MakeCloud(103, 5, true);
+  for (const bool ascii : { false, true })
+  {
+    const std::string path = PathOf(ascii ? "pieces_ascii.ply" : "pieces_binary.ply");
+    Write(cloud, path, ascii);
+    const int pieces = 4;
+    vtkIdType next = 0;
+    for (int p = 0; p < pieces; ++p)
+    {
+      vtkNew<vtkPointCloudPLYReader> reader;
+      reader->SetFileName(path.c_str());
+      reader->UpdatePiece(p, pieces, 0);
+      vtkPolyData* piece = reader->GetOutput();
+      const vtkIdType n = piece->GetNumberOfPoints();
+      // Binary: 103 = 25 + 26 + 26 + 26 (floor(103 p / 4) onwards); ASCII: all on piece 0.
+      const vtkIdType expected = ascii ? (p == 0 ? 103 : 0) : 103 * (p + 1) / 4 - 103 * p / 4;
+      FEATUREPOINTS_CHECK(reader->GetErrorCode() == 0 && n == expected &&
+          piece->GetNumberOfVerts() == n,
+        "%s piece %d of %d: %lld points (%lld expected)", ascii ? "ASCII" : "binary", p, pieces,
+        static_cast<long long>(n), static_cast<long long>(expected));
+      vtkDataArray* label = piece->GetPointData()->GetArray("Label");
+      vtkDataArray* original = cloud->GetPointData()->GetArray("Label");
+      for (vtkIdType i = 0; i < n && next + i < 103; ++i)
+      {
+        double x[3], y[3];
+        piece->GetPoint(i, x);
+        cloud->GetPoint(next + i, y);
+        const bool same = x[0] == y[0] && x[1] == y[1] && x[2] == y[2] && label && original &&
+          label->GetTuple1(i) == original->GetTuple1(next + i);
+        if (!same)
+        {
+          FEATUREPOINTS_CHECK(same, "%s piece %d: point %lld is not point %lld of the file",
+            ascii ? "ASCII" : "binary", p, static_cast<long long>(i),
+            static_cast<long long>(next + i));
+          break;
+        }
+      }
+      next += n;
+    }
+    FEATUREPOINTS_CHECK(next == 103, "%s pieces hold %lld points", ascii ? "ASCII" : "binary",
+      static_cast<long long>(next));
+  }
+  std::printf("%-34s binary 25+26+26+26 points by byte ranges, ASCII all on piece 0\n", "pieces:");
+}
 } // namespace
 
 int TestPointCloudPLY(int argc, char* argv[])
@@ -657,6 +705,7 @@ int TestPointCloudPLY(int argc, char* argv[])
   TestHandWrittenAscii();
   TestBigEndian();
   TestErrors();
+  TestPieces();
   if (Failures > 0)
   {
     std::printf("%d checks failed\n", Failures);

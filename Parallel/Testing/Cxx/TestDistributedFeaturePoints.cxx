@@ -4,7 +4,11 @@
 // `mpiexec -n N TestDistributedFeaturePoints N`.
 // `TestDistributedFeaturePoints --write FILE N` (one process) writes the cloud with duplicates
 // built from an N-point bracket, for the command-line tool's test; `--write-plain FILE N` the
-// bracket itself (benchmarks).
+// bracket itself (benchmarks); `--write-plate FILE N` the plate with a hole (density contrast for
+// the paper's voxel pre-filter) with a few duplicates. `--compare-pvtp FILE.pvtp REFERENCE N`
+// checks a parallel output of N pieces against one process's output REFERENCE (any readable
+// format): each piece holds its points in ascending GlobalPointIds, the pieces every point once,
+// and every array of the reference is the same at each point's GlobalPointIds.
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
 #include "vtkDataArray.h"
@@ -23,21 +27,28 @@
 #include "vtkSmartPointer.h"
 #include "vtkSurfaceVariationFeatures.h"
 #include "vtkUnsignedCharArray.h"
+#ifdef FEATUREPOINTS_TEST_PVTP
+#include "vtkXMLPPolyDataReader.h"
+#endif
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace
 {
-// A generated part (the L bracket: convex and concave edges, a shallow crease), noisy.
-vtkSmartPointer<vtkPolyData> Bracket(vtkIdType n)
+// A generated part (the L bracket: convex and concave edges, a shallow crease), noisy. Its bands
+// around the features are sampled three times as densely, which the voxel pre-filter of the
+// paper's method sees on the plate with a hole.
+vtkSmartPointer<vtkPolyData> Bracket(vtkIdType n, int model = vtkFeatureModelSource::BRACKET)
 {
   vtkNew<vtkFeatureModelSource> source;
-  source->SetModel(vtkFeatureModelSource::BRACKET);
+  source->SetModel(model);
   source->SetNumberOfPoints(n);
   source->SetSeed(7);
   source->Update();
@@ -46,9 +57,9 @@ vtkSmartPointer<vtkPolyData> Bracket(vtkIdType n)
   return cloud;
 }
 
-// The bracket with many duplicates: one point in 4 copied 1 to 5 times, the copies at random
-// places in the order, so that stacks straddle the pieces.
-vtkSmartPointer<vtkPolyData> WithDuplicates(vtkPolyData* base)
+// The bracket with many duplicates: one point in `every` (4) copied 1 to 5 times, the copies at
+// random places in the order, so that stacks straddle the pieces.
+vtkSmartPointer<vtkPolyData> WithDuplicates(vtkPolyData* base, int every = 4)
 {
   vtkNew<vtkMinimalStandardRandomSequence> random;
   random->SetSeed(11);
@@ -59,7 +70,7 @@ vtkSmartPointer<vtkPolyData> WithDuplicates(vtkPolyData* base)
   for (vtkIdType i = 0; i < n; ++i)
   {
     order.push_back(i);
-    if (i % 4 == 0)
+    if (i % every == 0)
     {
       random->Next();
       const int copies = 1 + static_cast<int>(5 * random->GetValue());
@@ -171,13 +182,103 @@ bool Same(vtkPolyData* a, vtkPolyData* b, const std::string& label)
 }
 } // namespace
 
+// --compare-pvtp: see the file's comment.
+int ComparePieces(const char* pvtp, const char* referenceFile, int pieces)
+{
+#ifndef FEATUREPOINTS_TEST_PVTP
+  std::printf("%s: this build has no VTK::IOParallelXML to read it with\n", pvtp);
+  (void)referenceFile;
+  (void)pieces;
+  return EXIT_FAILURE;
+#else
+  std::string error;
+  vtkSmartPointer<vtkPointSet> reference = vtkPointCloudIO::Read(referenceFile, error);
+  if (!reference)
+  {
+    std::printf("%s\n", error.c_str());
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkXMLPPolyDataReader> reader;
+  reader->SetFileName(pvtp);
+  reader->UpdateInformation();
+  if (reader->GetNumberOfPieces() != pieces)
+  {
+    std::printf("%s: %d pieces, %d expected\n", pvtp, reader->GetNumberOfPieces(), pieces);
+    return EXIT_FAILURE;
+  }
+  const vtkIdType n = reference->GetNumberOfPoints();
+  std::vector<int> seen(n, 0);
+  int failed = 0;
+  for (int p = 0; p < pieces; ++p)
+  {
+    reader->UpdatePiece(p, pieces, 0);
+    vtkPolyData* piece = reader->GetOutput();
+    vtkDataArray* gids = piece->GetPointData()->GetArray("GlobalPointIds");
+    if (!gids)
+    {
+      std::printf("piece %d: no GlobalPointIds\n", p);
+      return EXIT_FAILURE;
+    }
+    long long last = -1;
+    for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+    {
+      const long long g = static_cast<long long>(gids->GetTuple1(i));
+      if (g <= last || g >= n)
+      {
+        std::printf("piece %d: point %lld has GlobalPointIds %lld after %lld\n", p,
+          static_cast<long long>(i), g, last);
+        return EXIT_FAILURE;
+      }
+      last = g;
+      ++seen[g];
+      double x[3], y[3];
+      piece->GetPoint(i, x);
+      reference->GetPoint(g, y);
+      bool same = x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
+      for (int a = 0; a < reference->GetPointData()->GetNumberOfArrays(); ++a)
+      {
+        vtkDataArray* r = reference->GetPointData()->GetArray(a);
+        vtkDataArray* q = r ? piece->GetPointData()->GetArray(r->GetName()) : nullptr;
+        for (int c = 0; r && q && c < r->GetNumberOfComponents(); ++c)
+        {
+          same = same && r->GetComponent(g, c) == q->GetComponent(i, c);
+        }
+        same = same && (!r || q);
+      }
+      if (!same && failed++ < 5)
+      {
+        std::printf("piece %d: point %lld (global %lld) differs from one process's\n", p,
+          static_cast<long long>(i), g);
+      }
+    }
+    std::printf("piece %d: %lld points, global ids ascending\n", p,
+      static_cast<long long>(piece->GetNumberOfPoints()));
+  }
+  const vtkIdType once = std::count(seen.begin(), seen.end(), 1);
+  if (once != n)
+  {
+    std::printf("%lld of %lld points are in exactly one piece\n", static_cast<long long>(once),
+      static_cast<long long>(n));
+    return EXIT_FAILURE;
+  }
+  return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+#endif
+}
+
 int main(int argc, char* argv[])
 {
-  if (argc == 4 && (std::string(argv[1]) == "--write" || std::string(argv[1]) == "--write-plain"))
+  if (argc == 5 && std::string(argv[1]) == "--compare-pvtp")
+  {
+    return ComparePieces(argv[2], argv[3], std::atoi(argv[4]));
+  }
+  const std::string mode = argc == 4 ? argv[1] : "";
+  if (mode == "--write" || mode == "--write-plain" || mode == "--write-plate")
   {
     std::string error;
-    vtkSmartPointer<vtkPolyData> cloud = Bracket(std::atoll(argv[3]));
-    if (std::string(argv[1]) == "--write")
+    vtkSmartPointer<vtkPolyData> cloud = mode == "--write-plate"
+      ? WithDuplicates(Bracket(std::atoll(argv[3]), vtkFeatureModelSource::PLATE_WITH_HOLE), 16)
+      : Bracket(std::atoll(argv[3]));
+    if (mode == "--write")
     {
       cloud = WithDuplicates(cloud);
     }
@@ -202,12 +303,18 @@ int main(int argc, char* argv[])
 
   vtkSmartPointer<vtkPolyData> bracket = Bracket(20000);
   vtkSmartPointer<vtkPolyData> duplicates = WithDuplicates(bracket);
+  // The voxel pre-filter finds density contrast on the plate; at 90,000 points (65,536 or more)
+  // after its quick screen on a sample.
+  vtkSmartPointer<vtkPolyData> plate = Bracket(20000, vtkFeatureModelSource::PLATE_WITH_HOLE);
+  vtkSmartPointer<vtkPolyData> plateDuplicates = WithDuplicates(plate, 16);
+  vtkSmartPointer<vtkPolyData> large = Bracket(90000, vtkFeatureModelSource::PLATE_WITH_HOLE);
   struct Case
   {
     const char* Name;
     vtkPolyData* Cloud;
     std::function<vtkSmartPointer<vtkFeaturePointDetector>()> Make;
     bool Distributed; // the cloud is split (false: run on process 0 alone)
+    bool Prefiltered; // the voxel pre-filter keeps some points only (not every point a candidate)
   };
   auto make = [](vtkFeaturePointDetector* detector) {
     vtkSmartPointer<vtkFeaturePointDetector> owned;
@@ -220,18 +327,21 @@ int main(int argc, char* argv[])
     return vtkSmartPointer<vtkFeaturePointDetector>(f);
   };
   const Case cases[] = {
-    { "huang2023 (voxel filter off), bracket", bracket, [&] { return huang(false); }, true },
-    { "huang2023 (voxel filter off), duplicates", duplicates, [&] { return huang(false); }, true },
-    { "variation, bracket", bracket,
-      [&] { return make(vtkSurfaceVariationFeatures::New()); },
-      true },
-    { "curvature, duplicates", duplicates,
-      [&] { return make(vtkCurvatureDensityFeatures::New()); },
-      true },
-    { "huang2023 (defaults), duplicates", duplicates, [&] { return huang(true); }, false },
-    { "crease (defaults), bracket", bracket,
-      [&] { return make(vtkCreaseVotingFeatures::New()); },
+    { "huang2023 (voxel filter off), bracket", bracket, [&] { return huang(false); }, true,
       false },
+    { "huang2023 (voxel filter off), duplicates", duplicates, [&] { return huang(false); }, true,
+      false },
+    { "variation, bracket", bracket,
+      [&] { return make(vtkSurfaceVariationFeatures::New()); }, true, false },
+    { "curvature, duplicates", duplicates,
+      [&] { return make(vtkCurvatureDensityFeatures::New()); }, true, false },
+    { "huang2023 (defaults), bracket", bracket, [&] { return huang(true); }, true, false },
+    { "huang2023 (defaults), plate", plate, [&] { return huang(true); }, true, true },
+    { "huang2023 (defaults), plate with duplicates", plateDuplicates,
+      [&] { return huang(true); }, true, true },
+    { "huang2023 (defaults), plate 90000", large, [&] { return huang(true); }, true, true },
+    { "crease (defaults), bracket", bracket,
+      [&] { return make(vtkCreaseVotingFeatures::New()); }, false, false },
   };
   for (const Case& c : cases)
   {
@@ -269,6 +379,19 @@ int main(int argc, char* argv[])
       {
         owned += driver->GetNumberOfOwnedPoints(r);
         halo += driver->GetNumberOfHaloPoints(r);
+      }
+      vtkDataArray* candidates = reference->GetPointData()->GetArray("Candidate");
+      vtkIdType kept = 0;
+      for (vtkIdType i = 0; candidates && i < candidates->GetNumberOfTuples(); ++i)
+      {
+        kept += candidates->GetTuple1(i) != 0.0 ? 1 : 0;
+      }
+      if (c.Prefiltered && !(kept > 0 && kept < reference->GetNumberOfPoints()))
+      {
+        std::printf("%s: %lld candidates of %lld points: the voxel pre-filter kept %s\n",
+          label.c_str(), static_cast<long long>(kept),
+          static_cast<long long>(reference->GetNumberOfPoints()), kept ? "every point" : "none");
+        ok = 0;
       }
       if (owned != c.Cloud->GetNumberOfPoints() || (c.Distributed && halo == 0))
       {
