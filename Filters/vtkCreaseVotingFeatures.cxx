@@ -186,13 +186,24 @@ double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
     a << u * u, u * v, v * v, u, v, 1.0;
     return a;
   };
+  // The rows are kept for the residual's pass (this thread's scratch: no allocation per fit).
+  thread_local std::vector<Eigen::Matrix<double, 7, 1>> rows;
+  rows.resize(p.size());
   Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> ath = Eigen::Matrix<double, 6, 1>::Zero();
   double h = 0.0;
-  for (const Eigen::Vector3d& q : p)
+  for (size_t j = 0; j < p.size(); ++j)
   {
-    const Eigen::Matrix<double, 6, 1> a = row(q, h);
-    ata.selfadjointView<Eigen::Lower>().rankUpdate(a);
+    const Eigen::Matrix<double, 6, 1> a = row(p[j], h);
+    rows[j] << a, h;
+    // The lower triangle of a a^T, as Eigen's rankUpdate adds it, written out to be inlined.
+    for (int c = 0; c < 6; ++c)
+    {
+      for (int l = c; l < 6; ++l)
+      {
+        ata(l, c) += a[c] * a[l];
+      }
+    }
     ath += h * a;
   }
   const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(ata.selfadjointView<Eigen::Lower>());
@@ -209,9 +220,9 @@ double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
     *bend = hessian.eigenvalues().cwiseAbs().maxCoeff();
   }
   double rss = 0.0;
-  for (const Eigen::Vector3d& q : p)
+  for (const Eigen::Matrix<double, 7, 1>& a : rows)
   {
-    const double r = row(q, h).dot(x) - h;
+    const double r = a.head<6>().dot(x) - a[6];
     rss += r * r;
   }
   rss *= radius * radius;
@@ -301,17 +312,20 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
     return fit;
   }
   // Split by the direction in which the (consistently oriented) normals vary most.
+  thread_local std::vector<Eigen::Vector3d> oriented;
+  oriented.resize(m);
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (size_t j = 0; j < m; ++j)
   {
-    mean += nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j];
+    oriented[j] = nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j];
+    mean += oriented[j];
   }
   mean /= static_cast<double>(m);
   Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
   for (size_t j = 0; j < m; ++j)
   {
-    const Eigen::Vector3d v = (nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j]) - mean;
-    spread += v * v.transpose();
+    oriented[j] -= mean;
+    spread += oriented[j] * oriented[j].transpose();
   }
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(spread);
@@ -319,8 +333,7 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   Moments side[2];
   for (size_t j = 0; j < m; ++j)
   {
-    const Eigen::Vector3d v = (nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j]) - mean;
-    label[j] = v.dot(e) >= 0.0 ? 0 : 1;
+    label[j] = oriented[j].dot(e) >= 0.0 ? 0 : 1;
     side[label[j]].Add(p[j]);
   }
   // Planes and nearest-plane assignment until the split settles; each pass over the points
@@ -483,12 +496,14 @@ struct SheetReach
   std::vector<int32_t> Parent, Size;
 
   // Marks the reached neighbours in the bit mask `reached` (local indices); returns their count.
-  int Reach(vtkIdType id, const int32_t* row, int count, const int32_t* table, int k,
-    const std::vector<vtkIdType>& rowOf, uint64_t* reached)
+  // `links` holds, by point id, each point's SheetLinks nearest (-1 where fewer).
+  int Reach(vtkIdType id, const int32_t* row, int count, const std::vector<int32_t>& links,
+    uint64_t* reached)
   {
-    if (this->LocalOf.size() != rowOf.size())
+    const size_t n = links.size() / SheetLinks;
+    if (this->LocalOf.size() != n)
     {
-      this->LocalOf.assign(rowOf.size(), -1);
+      this->LocalOf.assign(n, -1);
     }
     auto idOf = [&](int j) { return j == 0 ? id : static_cast<vtkIdType>(row[j - 1]); };
     this->Parent.resize(static_cast<size_t>(count) + 1);
@@ -508,8 +523,7 @@ struct SheetReach
     };
     for (int j = 0; j <= count; ++j)
     {
-      // A neighbour's nearest come first in its own row of the table.
-      const int32_t* linked = table + rowOf[idOf(j)] * k;
+      const int32_t* linked = links.data() + idOf(j) * SheetLinks;
       for (int e = 0; e < SheetLinks && linked[e] >= 0; ++e)
       {
         const int other = this->LocalOf[linked[e]];
@@ -570,6 +584,10 @@ struct CreaseRun
   const vtkIdType N; // points
   vtkIdType Rows = 0;
   std::vector<vtkIdType> RowOf;
+  // By point id: its SheetLinks nearest (the start of its row), -1 where none. The one-sheet
+  // links read these for every neighbour of every point: a table of their own keeps them
+  // together in memory instead of one cache line per row of the wide table.
+  std::vector<int32_t> Links;
   // One bit per neighbour (and the point) of each row: on the point's sheet.
   size_t Words = 0;
   std::vector<uint64_t> Sheets;
@@ -600,6 +618,13 @@ struct CreaseRun
       this->RowOf[ids[r]] = r;
     }
     this->Words = (static_cast<size_t>(kfit) + 1 + 63) / 64;
+    this->Links.assign(static_cast<size_t>(n) * SheetLinks, -1);
+    const int width = std::min(SheetLinks, k);
+    for (vtkIdType r = 0; r < this->Rows; ++r)
+    {
+      std::copy(table.data() + r * k, table.data() + r * k + width,
+        this->Links.data() + ids[r] * SheetLinks);
+    }
   }
 
   const int32_t* Row(vtkIdType r) const { return this->Table.data() + r * this->K; }
@@ -760,8 +785,7 @@ void CreaseRun::FitCreases(const float* normal)
       uint64_t* sheet = this->Sheets.data() + r * this->Words;
       // Every neighbour when the sheet holds fewer than 8 points (an isolated point), so that
       // the fit has something to work on.
-      if (s.Sheet.Reach(this->Ids[r], row, count, this->Table.data(), this->K, this->RowOf,
-            sheet) < 8)
+      if (s.Sheet.Reach(this->Ids[r], row, count, this->Links, sheet) < 8)
       {
         std::fill(sheet, sheet + this->Words, ~uint64_t(0));
       }
