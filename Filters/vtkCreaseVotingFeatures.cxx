@@ -525,7 +525,9 @@ double FitCurvedHinge(const std::vector<Eigen::Vector3d>& p, const CreaseLine& l
 struct SheetReach
 {
   std::vector<int16_t> LocalOf; // by point id: its local index in the current neighbourhood, or -1
-  std::vector<int32_t> Parent, Size;
+  std::vector<int16_t> Out;     // by local index: the local indices of its links, -1 outside
+  std::vector<unsigned char> In;
+  std::vector<int16_t> Stack;
 
   // Marks the reached neighbours in the bit mask `reached` (local indices); returns their count.
   // `links` holds, by point id, each point's SheetLinks nearest (-1 where fewer).
@@ -538,51 +540,77 @@ struct SheetReach
       this->LocalOf.assign(n, -1);
     }
     auto idOf = [&](int j) { return j == 0 ? id : static_cast<vtkIdType>(row[j - 1]); };
-    this->Parent.resize(static_cast<size_t>(count) + 1);
-    this->Size.assign(static_cast<size_t>(count) + 1, 1);
+    const size_t points = static_cast<size_t>(count) + 1;
     for (int j = 0; j <= count; ++j)
     {
       this->LocalOf[idOf(j)] = static_cast<int16_t>(j);
-      this->Parent[j] = j;
     }
-    auto find = [&](int j) {
-      while (this->Parent[j] != j)
-      {
-        this->Parent[j] = this->Parent[this->Parent[j]];
-        j = this->Parent[j];
-      }
-      return j;
-    };
+    this->Out.resize(points * SheetLinks);
     for (int j = 0; j <= count; ++j)
     {
       const int32_t* linked = links.data() + idOf(j) * SheetLinks;
-      for (int e = 0; e < SheetLinks && linked[e] >= 0; ++e)
+      for (int e = 0; e < SheetLinks; ++e)
       {
-        const int other = this->LocalOf[linked[e]];
-        if (other >= 0)
+        this->Out[j * SheetLinks + e] = linked[e] >= 0 ? this->LocalOf[linked[e]] : int16_t(-1);
+      }
+    }
+    for (int j = 0; j <= count; ++j)
+    {
+      this->LocalOf[idOf(j)] = -1;
+    }
+    // The component of the point in the graph whose edges are the links taken either way round:
+    // a search along the links from the point, then sweeps that add the points linking to a
+    // reached point (and what their links reach) until a sweep adds none. Most points are
+    // reached by the first search.
+    this->In.assign(points, 0);
+    int members = 0;
+    auto spread = [&](int start) {
+      this->In[start] = 1;
+      ++members;
+      this->Stack.assign(1, static_cast<int16_t>(start));
+      while (!this->Stack.empty())
+      {
+        const int j = this->Stack.back();
+        this->Stack.pop_back();
+        for (int e = 0; e < SheetLinks; ++e)
         {
-          int a = find(j), b = find(other);
-          if (a != b) // union by size: the trees stay shallow
+          const int other = this->Out[j * SheetLinks + e];
+          if (other >= 0 && !this->In[other])
           {
-            if (this->Size[a] > this->Size[b])
-            {
-              std::swap(a, b);
-            }
-            this->Parent[a] = b;
-            this->Size[b] += this->Size[a];
+            this->In[other] = 1;
+            ++members;
+            this->Stack.push_back(static_cast<int16_t>(other));
+          }
+        }
+      }
+    };
+    spread(0);
+    for (bool added = true; added && members < static_cast<int>(points);)
+    {
+      added = false;
+      for (int j = 1; j <= count; ++j)
+      {
+        if (this->In[j])
+        {
+          continue;
+        }
+        for (int e = 0; e < SheetLinks; ++e)
+        {
+          const int other = this->Out[j * SheetLinks + e];
+          if (other >= 0 && this->In[other])
+          {
+            spread(j);
+            added = true;
+            break;
           }
         }
       }
     }
-    const int root = find(0);
-    int members = 0;
     for (int j = 0; j <= count; ++j)
     {
-      this->LocalOf[idOf(j)] = -1;
-      if (find(j) == root)
+      if (this->In[j])
       {
         reached[j / 64] |= uint64_t(1) << (j % 64);
-        ++members;
       }
     }
     return members;
