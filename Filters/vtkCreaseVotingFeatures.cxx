@@ -1057,11 +1057,45 @@ vtkIdType CreaseRun::Grow(const float* vote, double growAt, unsigned char* m) co
   return added;
 }
 
+// Whether the directions of the points q (relative to the point) in the plane (e1, e2) may leave
+// an empty sector wider than BorderGap: false when each run of empty sectors among twelve of 30
+// degrees is at most one long. A gap above 120 degrees holds three whole sectors; one of its
+// two end points may fall into the sector next to its own when it lies on a sector's edge
+// (rounding), which leaves two. Most points are not near a border: this spares them the angles.
+bool MaybeWideGap(const double* q, int count, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2)
+{
+  const double tan30 = std::tan(Pi / 6.0), tan60 = std::tan(Pi / 3.0);
+  unsigned int occupied = 0; // one bit per sector
+  for (int j = 0; j < count; ++j)
+  {
+    const Eigen::Vector3d v(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+    const double a = v.dot(e1), b = v.dot(e2);
+    if (a == 0.0 && b == 0.0)
+    {
+      continue;
+    }
+    // Quadrant, then the angle within it, from atan(y / x) with x, y >= 0.
+    const int quadrant = b >= 0.0 ? (a >= 0.0 ? 0 : 1) : (a < 0.0 ? 2 : 3);
+    const double x = quadrant % 2 == 0 ? std::abs(a) : std::abs(b);
+    const double y = quadrant % 2 == 0 ? std::abs(b) : std::abs(a);
+    const int sector = 3 * quadrant + (y < x * tan30 ? 0 : y < x * tan60 ? 1 : 2);
+    occupied |= 1u << sector;
+  }
+  // Two empty sectors in a row, the twelfth followed by the first.
+  const unsigned int empty = ~occupied & 0xfffu;
+  const unsigned int next = ((empty >> 1) | (empty << 11)) & 0xfffu;
+  return (empty & next) != 0;
+}
+
 void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
 {
-  vtkSMPThreadLocal<std::vector<double>> scratch;
+  struct BorderScratch
+  {
+    std::vector<double> Q, Angles;
+  };
+  vtkSMPThreadLocal<BorderScratch> scratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
-    std::vector<double>& q = scratch.Local();
+    std::vector<double>& q = scratch.Local().Q;
     double x[3], y[3], lambda[3], nrm[3];
     const double none[3] = { 0.0, 0.0, 0.0 };
     for (vtkIdType r = begin; r < end; ++r)
@@ -1091,8 +1125,12 @@ void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
       const Eigen::Vector3d n(nrm[0], nrm[1], nrm[2]);
       const Eigen::Vector3d e1 = n.unitOrthogonal();
       const Eigen::Vector3d e2 = n.cross(e1);
-      std::vector<double> angles;
-      angles.reserve(static_cast<size_t>(count));
+      if (!MaybeWideGap(q.data(), count, e1, e2))
+      {
+        continue;
+      }
+      std::vector<double>& angles = scratch.Local().Angles;
+      angles.clear();
       for (int j = 0; j < count; ++j)
       {
         const Eigen::Vector3d v(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
