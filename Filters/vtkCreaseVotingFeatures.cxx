@@ -644,10 +644,6 @@ struct CreaseRun
   const vtkIdType N; // points
   vtkIdType Rows = 0;
   std::vector<vtkIdType> RowOf;
-  // By point id: its SheetLinks nearest (the start of its row), -1 where none. The one-sheet
-  // links read these for every neighbour of every point: a table of their own keeps them
-  // together in memory instead of one cache line per row of the wide table.
-  std::vector<int32_t> Links;
   // One bit per neighbour (and the point) of each row: on the point's sheet.
   size_t Words = 0;
   std::vector<uint64_t> Sheets;
@@ -678,13 +674,6 @@ struct CreaseRun
       this->RowOf[ids[r]] = r;
     }
     this->Words = (static_cast<size_t>(kfit) + 1 + 63) / 64;
-    this->Links.assign(static_cast<size_t>(n) * SheetLinks, -1);
-    const int width = std::min(SheetLinks, k);
-    for (vtkIdType r = 0; r < this->Rows; ++r)
-    {
-      std::copy(table.data() + r * k, table.data() + r * k + width,
-        this->Links.data() + ids[r] * SheetLinks);
-    }
   }
 
   const int32_t* Row(vtkIdType r) const { return this->Table.data() + r * this->K; }
@@ -835,6 +824,15 @@ void CreaseRun::FitCreases(const float* normal)
   this->Fits.assign(static_cast<size_t>(this->Rows), CreaseFit());
   this->Sheets.assign(static_cast<size_t>(this->Rows) * this->Words, 0);
   this->Scale.assign(static_cast<size_t>(this->Rows), this->KFit);
+  // By point id: its SheetLinks nearest (the start of its row), -1 where none. The one-sheet
+  // links read these for every neighbour of every point: a table of their own keeps them
+  // together in memory instead of one cache line per row of the wide table.
+  std::vector<int32_t> links(static_cast<size_t>(this->N) * SheetLinks, -1);
+  const int width = std::min(SheetLinks, this->K);
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    std::copy(this->Row(r), this->Row(r) + width, links.data() + this->Ids[r] * SheetLinks);
+  }
   vtkSMPThreadLocal<Scratch> scratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     Scratch& s = scratch.Local();
@@ -845,7 +843,7 @@ void CreaseRun::FitCreases(const float* normal)
       uint64_t* sheet = this->Sheets.data() + r * this->Words;
       // Every neighbour when the sheet holds fewer than 8 points (an isolated point), so that
       // the fit has something to work on.
-      if (s.Sheet.Reach(this->Ids[r], row, count, this->Links, sheet) < 8)
+      if (s.Sheet.Reach(this->Ids[r], row, count, links, sheet) < 8)
       {
         std::fill(sheet, sheet + this->Words, ~uint64_t(0));
       }
