@@ -342,14 +342,6 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   double ra = 0.0, rb = 0.0, rss2 = rss1;
   bool fitted = false;
   next.resize(m);
-  // The previous round's split, planes and residual. Each round depends only on the split it
-  // starts from, so a split that comes back two rounds later (on noise the assignment often
-  // alternates between two splits) repeats forever: the last round is then known without
-  // running the rounds in between.
-  thread_local std::vector<unsigned char> previous;
-  previous.resize(m);
-  Eigen::Vector3d previousPlanes[4];
-  double previousRss = 0.0;
   for (int round = 0; round < MaximumRounds; ++round)
   {
     if (!FitPlane(side[0], ca, na, ra) || !FitPlane(side[1], cb, nb, rb))
@@ -375,31 +367,7 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
     {
       break;
     }
-    if (round > 0 && std::equal(next.begin(), next.end(), previous.begin()))
-    {
-      // Rounds alternate from here on: the last one, MaximumRounds - 1, is this one when an even
-      // number of rounds away, else the previous one (its split is the current label).
-      if ((MaximumRounds - 1 - round) % 2 == 0)
-      {
-        label.swap(next);
-      }
-      else
-      {
-        ca = previousPlanes[0];
-        na = previousPlanes[1];
-        cb = previousPlanes[2];
-        nb = previousPlanes[3];
-        rss2 = previousRss;
-      }
-      break;
-    }
-    previous.swap(label);
     label.swap(next);
-    previousPlanes[0] = ca;
-    previousPlanes[1] = na;
-    previousPlanes[2] = cb;
-    previousPlanes[3] = nb;
-    previousRss = rss;
     side[0] = nextSide[0];
     side[1] = nextSide[1];
   }
