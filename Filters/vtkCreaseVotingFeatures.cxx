@@ -195,13 +195,24 @@ double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
     a << u * u, u * v, v * v, u, v, 1.0;
     return a;
   };
+  // The rows are kept for the residual's pass (this thread's scratch: no allocation per fit).
+  thread_local std::vector<Eigen::Matrix<double, 7, 1>> rows;
+  rows.resize(p.size());
   Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> ath = Eigen::Matrix<double, 6, 1>::Zero();
   double h = 0.0;
-  for (const Eigen::Vector3d& q : p)
+  for (size_t j = 0; j < p.size(); ++j)
   {
-    const Eigen::Matrix<double, 6, 1> a = row(q, h);
-    ata.selfadjointView<Eigen::Lower>().rankUpdate(a);
+    const Eigen::Matrix<double, 6, 1> a = row(p[j], h);
+    rows[j] << a, h;
+    // The lower triangle of a a^T, as Eigen's rankUpdate adds it, written out to be inlined.
+    for (int c = 0; c < 6; ++c)
+    {
+      for (int l = c; l < 6; ++l)
+      {
+        ata(l, c) += a[c] * a[l];
+      }
+    }
     ath += h * a;
   }
   const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(ata.selfadjointView<Eigen::Lower>());
@@ -218,9 +229,9 @@ double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
     *bend = hessian.eigenvalues().cwiseAbs().maxCoeff();
   }
   double rss = 0.0;
-  for (const Eigen::Vector3d& q : p)
+  for (const Eigen::Matrix<double, 7, 1>& a : rows)
   {
-    const double r = row(q, h).dot(x) - h;
+    const double r = a.head<6>().dot(x) - a[6];
     rss += r * r;
   }
   rss *= radius * radius;
@@ -393,17 +404,20 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
     return fit;
   }
   // Split by the direction in which the (consistently oriented) normals vary most.
+  thread_local std::vector<Eigen::Vector3d> oriented;
+  oriented.resize(m);
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (size_t j = 0; j < m; ++j)
   {
-    mean += nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j];
+    oriented[j] = nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j];
+    mean += oriented[j];
   }
   mean /= static_cast<double>(m);
   Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
   for (size_t j = 0; j < m; ++j)
   {
-    const Eigen::Vector3d v = (nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j]) - mean;
-    spread += v * v.transpose();
+    oriented[j] -= mean;
+    spread += oriented[j] * oriented[j].transpose();
   }
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(spread);
@@ -411,8 +425,7 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   Moments side[2];
   for (size_t j = 0; j < m; ++j)
   {
-    const Eigen::Vector3d v = (nr[j].dot(n1) < 0.0 ? -nr[j] : nr[j]) - mean;
-    label[j] = v.dot(e) >= 0.0 ? 0 : 1;
+    label[j] = oriented[j].dot(e) >= 0.0 ? 0 : 1;
     side[label[j]].Add(p[j]);
   }
   // Planes and nearest-plane assignment until the split settles; each pass over the points
@@ -589,63 +602,92 @@ double FitCurvedHinge(const std::vector<Eigen::Vector3d>& p, const CreaseLine& l
 struct SheetReach
 {
   std::vector<int16_t> LocalOf; // by point id: its local index in the current neighbourhood, or -1
-  std::vector<int32_t> Parent, Size;
+  std::vector<int16_t> Out;     // by local index: the local indices of its links, -1 outside
+  std::vector<unsigned char> In;
+  std::vector<int16_t> Stack;
 
   // Marks the reached neighbours in the bit mask `reached` (local indices); returns their count.
-  int Reach(vtkIdType id, const int32_t* row, int count, const int32_t* table, int k,
-    const std::vector<vtkIdType>& rowOf, uint64_t* reached)
+  // `links` holds, by point id, each point's SheetLinks nearest (-1 where fewer).
+  int Reach(vtkIdType id, const int32_t* row, int count, const std::vector<int32_t>& links,
+    uint64_t* reached)
   {
-    if (this->LocalOf.size() != rowOf.size())
+    const size_t n = links.size() / SheetLinks;
+    if (this->LocalOf.size() != n)
     {
-      this->LocalOf.assign(rowOf.size(), -1);
+      this->LocalOf.assign(n, -1);
     }
     auto idOf = [&](int j) { return j == 0 ? id : static_cast<vtkIdType>(row[j - 1]); };
-    this->Parent.resize(static_cast<size_t>(count) + 1);
-    this->Size.assign(static_cast<size_t>(count) + 1, 1);
+    const size_t points = static_cast<size_t>(count) + 1;
     for (int j = 0; j <= count; ++j)
     {
       this->LocalOf[idOf(j)] = static_cast<int16_t>(j);
-      this->Parent[j] = j;
     }
-    auto find = [&](int j) {
-      while (this->Parent[j] != j)
-      {
-        this->Parent[j] = this->Parent[this->Parent[j]];
-        j = this->Parent[j];
-      }
-      return j;
-    };
+    this->Out.resize(points * SheetLinks);
     for (int j = 0; j <= count; ++j)
     {
-      // A neighbour's nearest come first in its own row of the table.
-      const int32_t* linked = table + rowOf[idOf(j)] * k;
-      for (int e = 0; e < SheetLinks && linked[e] >= 0; ++e)
+      const int32_t* linked = links.data() + idOf(j) * SheetLinks;
+      for (int e = 0; e < SheetLinks; ++e)
       {
-        const int other = this->LocalOf[linked[e]];
-        if (other >= 0)
+        this->Out[j * SheetLinks + e] = linked[e] >= 0 ? this->LocalOf[linked[e]] : int16_t(-1);
+      }
+    }
+    for (int j = 0; j <= count; ++j)
+    {
+      this->LocalOf[idOf(j)] = -1;
+    }
+    // The component of the point in the graph whose edges are the links taken either way round:
+    // a search along the links from the point, then sweeps that add the points linking to a
+    // reached point (and what their links reach) until a sweep adds none. Most points are
+    // reached by the first search.
+    this->In.assign(points, 0);
+    int members = 0;
+    auto spread = [&](int start) {
+      this->In[start] = 1;
+      ++members;
+      this->Stack.assign(1, static_cast<int16_t>(start));
+      while (!this->Stack.empty())
+      {
+        const int j = this->Stack.back();
+        this->Stack.pop_back();
+        for (int e = 0; e < SheetLinks; ++e)
         {
-          int a = find(j), b = find(other);
-          if (a != b) // union by size: the trees stay shallow
+          const int other = this->Out[j * SheetLinks + e];
+          if (other >= 0 && !this->In[other])
           {
-            if (this->Size[a] > this->Size[b])
-            {
-              std::swap(a, b);
-            }
-            this->Parent[a] = b;
-            this->Size[b] += this->Size[a];
+            this->In[other] = 1;
+            ++members;
+            this->Stack.push_back(static_cast<int16_t>(other));
+          }
+        }
+      }
+    };
+    spread(0);
+    for (bool added = true; added && members < static_cast<int>(points);)
+    {
+      added = false;
+      for (int j = 1; j <= count; ++j)
+      {
+        if (this->In[j])
+        {
+          continue;
+        }
+        for (int e = 0; e < SheetLinks; ++e)
+        {
+          const int other = this->Out[j * SheetLinks + e];
+          if (other >= 0 && this->In[other])
+          {
+            spread(j);
+            added = true;
+            break;
           }
         }
       }
     }
-    const int root = find(0);
-    int members = 0;
     for (int j = 0; j <= count; ++j)
     {
-      this->LocalOf[idOf(j)] = -1;
-      if (find(j) == root)
+      if (this->In[j])
       {
         reached[j / 64] |= uint64_t(1) << (j % 64);
-        ++members;
       }
     }
     return members;
@@ -859,6 +901,15 @@ void CreaseRun::FitCreases(const float* normal)
   this->Fits.assign(static_cast<size_t>(this->Rows), CreaseFit());
   this->Sheets.assign(static_cast<size_t>(this->Rows) * this->Words, 0);
   this->Scale.assign(static_cast<size_t>(this->Rows), this->KFit);
+  // By point id: its SheetLinks nearest (the start of its row), -1 where none. The one-sheet
+  // links read these for every neighbour of every point: a table of their own keeps them
+  // together in memory instead of one cache line per row of the wide table.
+  std::vector<int32_t> links(static_cast<size_t>(this->N) * SheetLinks, -1);
+  const int width = std::min(SheetLinks, this->K);
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    std::copy(this->Row(r), this->Row(r) + width, links.data() + this->Ids[r] * SheetLinks);
+  }
   vtkSMPThreadLocal<Scratch> scratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     Scratch& s = scratch.Local();
@@ -869,8 +920,7 @@ void CreaseRun::FitCreases(const float* normal)
       uint64_t* sheet = this->Sheets.data() + r * this->Words;
       // Every neighbour when the sheet holds fewer than 8 points (an isolated point), so that
       // the fit has something to work on.
-      if (s.Sheet.Reach(this->Ids[r], row, count, this->Table.data(), this->K, this->RowOf,
-            sheet) < 8)
+      if (s.Sheet.Reach(this->Ids[r], row, count, links, sheet) < 8)
       {
         std::fill(sheet, sheet + this->Words, ~uint64_t(0));
       }
@@ -1083,11 +1133,45 @@ vtkIdType CreaseRun::Grow(const float* vote, double growAt, unsigned char* m) co
   return added;
 }
 
+// Whether the directions of the points q (relative to the point) in the plane (e1, e2) may leave
+// an empty sector wider than BorderGap: false when each run of empty sectors among twelve of 30
+// degrees is at most one long. A gap above 120 degrees holds three whole sectors; one of its
+// two end points may fall into the sector next to its own when it lies on a sector's edge
+// (rounding), which leaves two. Most points are not near a border: this spares them the angles.
+bool MaybeWideGap(const double* q, int count, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2)
+{
+  const double tan30 = std::tan(Pi / 6.0), tan60 = std::tan(Pi / 3.0);
+  unsigned int occupied = 0; // one bit per sector
+  for (int j = 0; j < count; ++j)
+  {
+    const Eigen::Vector3d v(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+    const double a = v.dot(e1), b = v.dot(e2);
+    if (a == 0.0 && b == 0.0)
+    {
+      continue;
+    }
+    // Quadrant, then the angle within it, from atan(y / x) with x, y >= 0.
+    const int quadrant = b >= 0.0 ? (a >= 0.0 ? 0 : 1) : (a < 0.0 ? 2 : 3);
+    const double x = quadrant % 2 == 0 ? std::abs(a) : std::abs(b);
+    const double y = quadrant % 2 == 0 ? std::abs(b) : std::abs(a);
+    const int sector = 3 * quadrant + (y < x * tan30 ? 0 : y < x * tan60 ? 1 : 2);
+    occupied |= 1u << sector;
+  }
+  // Two empty sectors in a row, the twelfth followed by the first.
+  const unsigned int empty = ~occupied & 0xfffu;
+  const unsigned int next = ((empty >> 1) | (empty << 11)) & 0xfffu;
+  return (empty & next) != 0;
+}
+
 void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
 {
-  vtkSMPThreadLocal<std::vector<double>> scratch;
+  struct BorderScratch
+  {
+    std::vector<double> Q, Angles;
+  };
+  vtkSMPThreadLocal<BorderScratch> scratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
-    std::vector<double>& q = scratch.Local();
+    std::vector<double>& q = scratch.Local().Q;
     double x[3], y[3], lambda[3], nrm[3];
     const double none[3] = { 0.0, 0.0, 0.0 };
     for (vtkIdType r = begin; r < end; ++r)
@@ -1117,8 +1201,12 @@ void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
       const Eigen::Vector3d n(nrm[0], nrm[1], nrm[2]);
       const Eigen::Vector3d e1 = n.unitOrthogonal();
       const Eigen::Vector3d e2 = n.cross(e1);
-      std::vector<double> angles;
-      angles.reserve(static_cast<size_t>(count));
+      if (!MaybeWideGap(q.data(), count, e1, e2))
+      {
+        continue;
+      }
+      std::vector<double>& angles = scratch.Local().Angles;
+      angles.clear();
       for (int j = 0; j < count; ++j)
       {
         const Eigen::Vector3d v(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
