@@ -343,6 +343,9 @@ private:
   // The slab of all points about x across the curve's tangent t, and the frame across it.
   void Section(const V3& x, const V3& t, double halfLength, std::vector<vtkIdType>& ids, V3& e1,
     V3& e2) const;
+  // The points `ids` in the cross-section's frame (x; e1, e2), appended to q; returns their sum.
+  Eigen::Vector2d Project(const std::vector<vtkIdType>& ids, const V3& x, const V3& e1,
+    const V3& e2, std::vector<Eigen::Vector2d>& q) const;
   // How the cross-section bends at x, over a slab halfLength either side along t: two faces
   // hinged at x (the line of the section's plane u, fitted unless `fixed`), the difference of
   // their slopes and its standard error.
@@ -1451,13 +1454,7 @@ CurveRun::Bend CurveRun::BendAt(
   this->Section(x, t, halfLength, ids, e1, e2);
   Bend result;
   std::vector<Eigen::Vector2d> q;
-  Eigen::Vector2d c = Eigen::Vector2d::Zero();
-  for (vtkIdType i : ids)
-  {
-    const V3 r = this->Points[i] - x;
-    q.emplace_back(r.dot(e1), r.dot(e2));
-    c += q.back();
-  }
+  Eigen::Vector2d c = this->Project(ids, x, e1, e2, q);
   if (q.size() < 10)
   {
     return result;
@@ -1531,13 +1528,7 @@ V3 CurveRun::FitBorder(
   // The face's line in the cross-section; along it, the points fill [b, ...) evenly: over a window
   // [b, a0 + W] their mean is the window's middle, which gives b.
   std::vector<Eigen::Vector2d> q;
-  Eigen::Vector2d c = Eigen::Vector2d::Zero();
-  for (vtkIdType i : ids)
-  {
-    const V3 r = this->Points[i] - x;
-    q.emplace_back(r.dot(e1), r.dot(e2));
-    c += q.back();
-  }
+  Eigen::Vector2d c = this->Project(ids, x, e1, e2, q);
   if (q.size() < 10)
   {
     return x;
@@ -1581,6 +1572,19 @@ V3 CurveRun::FitBorder(
     return x;
   }
   return x + p[0] * e1 + p[1] * e2;
+}
+
+Eigen::Vector2d CurveRun::Project(const std::vector<vtkIdType>& ids, const V3& x, const V3& e1,
+  const V3& e2, std::vector<Eigen::Vector2d>& q) const
+{
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (vtkIdType i : ids)
+  {
+    const V3 r = this->Points[i] - x;
+    q.emplace_back(r.dot(e1), r.dot(e2));
+    sum += q.back();
+  }
+  return sum;
 }
 
 void CurveRun::Section(const V3& x, const V3& t, double halfLength, std::vector<vtkIdType>& ids,

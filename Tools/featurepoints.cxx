@@ -1467,14 +1467,7 @@ private:
     }
     this->Meter->Stage("writing");
     const auto start = Clock::now();
-    vtkSmartPointer<vtkPolyData> written = this->Result;
-    if (s.FeaturesOnly)
-    {
-      written = vtkSmartPointer<vtkPolyData>::New();
-      vtkFeaturePointDetector::SelectFeaturePoints(this->Result,
-        vtkUnsignedCharArray::SafeDownCast(this->Result->GetPointData()->GetArray("FeatureMask")),
-        written);
-    }
+    vtkSmartPointer<vtkPolyData> written = this->Written();
     const int nProcs = Processes->GetNumberOfProcesses();
     vtkNew<vtkXMLPPolyDataWriter> writer;
     writer->SetController(Processes);
@@ -1833,19 +1826,26 @@ private:
     this->Times.emplace_back("render", Seconds(start));
   }
 
+  // What is written: the result, or only its feature points (with their ids in the input).
+  vtkSmartPointer<vtkPolyData> Written() const
+  {
+    if (!this->S.FeaturesOnly)
+    {
+      return this->Result;
+    }
+    auto written = vtkSmartPointer<vtkPolyData>::New();
+    vtkFeaturePointDetector::SelectFeaturePoints(this->Result,
+      vtkUnsignedCharArray::SafeDownCast(this->Result->GetPointData()->GetArray("FeatureMask")),
+      written);
+    return written;
+  }
+
   // The output (only the feature points if asked, with their ids in the input), the curves, and
   // the picture renamed into place: a failure leaves none of them behind.
   void WriteFiles()
   {
     const Settings& s = this->S;
-    vtkSmartPointer<vtkPolyData> written = this->Result;
-    if (s.FeaturesOnly)
-    {
-      written = vtkSmartPointer<vtkPolyData>::New();
-      vtkFeaturePointDetector::SelectFeaturePoints(this->Result,
-        vtkUnsignedCharArray::SafeDownCast(this->Result->GetPointData()->GetArray("FeatureMask")),
-        written);
-    }
+    vtkSmartPointer<vtkPolyData> written = this->Written();
     this->Meter->Stage("writing");
     const auto start = Clock::now();
     std::string error;
