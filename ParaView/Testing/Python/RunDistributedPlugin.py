@@ -65,7 +65,8 @@ def run(command, timeout=600):
 probe = os.path.join(folder, "probe.txt")
 code, text = run(launcher + ["-n", "2", pvbatch, "--mpi", script, "--probe", probe], 120)
 if code != 0 or not os.path.isfile(probe):
-    skip("mpiexec -n 2 pvbatch --mpi does not run here:\n" + text[-2000:])
+    shown = text if len(text) <= 4000 else text[:2000] + "\n[...]\n" + text[-2000:]
+    skip("mpiexec -n 2 pvbatch --mpi does not run here:\n" + shown)
 with open(probe) as f:
     if f.read().strip() != "2":
         skip("pvbatch --mpi under mpiexec -n 2 has no 2 partitions (ParaView without MPI?)")

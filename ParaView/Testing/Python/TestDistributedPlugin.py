@@ -21,42 +21,51 @@ def partitions():
     return servermanager.ActiveConnection.GetNumberOfDataPartitions()
 
 
-if sys.argv[1] == "--probe":
-    with open(sys.argv[2], "w") as f:
+def probe(output):
+    with open(output, "w") as f:
         f.write("%d\n" % partitions())
-    sys.exit(0)
 
-plugin, method, how, output = sys.argv[1:5]
-LoadPlugin(plugin, remote=False, ns=globals())
 
-source = FeatureModelSource()  # noqa: F821 (defined by LoadPlugin)
-source.Model = "Plate with hole (open borders)"
-source.NumberOfPoints = 20000
-score = {"crease": "CreaseVotes", "huang2023": "F"}[method]
-if how == "plain":
-    if method == "crease":
-        detector = CreaseFeaturePoints(Input=source)  # noqa: F821
+def run(plugin, method, how, output):
+    LoadPlugin(plugin, remote=False, ns=globals())
+
+    source = FeatureModelSource()  # noqa: F821 (defined by LoadPlugin)
+    source.Model = "Plate with hole (open borders)"
+    source.NumberOfPoints = 20000
+    score = {"crease": "CreaseVotes", "huang2023": "F"}[method]
+    if how == "plain":
+        if method == "crease":
+            detector = CreaseFeaturePoints(Input=source)  # noqa: F821
+        else:
+            detector = FeaturePoints(Input=source)  # noqa: F821
     else:
-        detector = FeaturePoints(Input=source)  # noqa: F821
-else:
-    detector = DistributedFeaturePoints(Input=source)  # noqa: F821
-    choices = detector.GetProperty("Detector").Available
-    wanted = "CreaseVotingFeatures" if method == "crease" else "FeaturePointExtraction"
-    label = {"CreaseVotingFeatures": "Crease Feature Points",
-             "FeaturePointExtraction": "Feature Points (Huang et al. 2023)"}[wanted]
-    detector.Detector = label if label in choices else wanted
-    detector.GatherOutput = 1
-detector.UpdatePipeline()
-result = servermanager.Fetch(detector)
-mask = result.GetPointData().GetArray("FeatureMask")
-values = result.GetPointData().GetArray(score)
-if mask is None or values is None:
-    print("no FeatureMask or %s in the result of %s (%s)" % (score, method, how))
+        detector = DistributedFeaturePoints(Input=source)  # noqa: F821
+        choices = detector.GetProperty("Detector").Available
+        wanted = "CreaseVotingFeatures" if method == "crease" else "FeaturePointExtraction"
+        label = {"CreaseVotingFeatures": "Crease Feature Points",
+                 "FeaturePointExtraction": "Feature Points (Huang et al. 2023)"}[wanted]
+        detector.Detector = label if label in choices else wanted
+        detector.GatherOutput = 1
+    detector.UpdatePipeline()
+    result = servermanager.Fetch(detector)
+    mask = result.GetPointData().GetArray("FeatureMask")
+    values = result.GetPointData().GetArray(score)
+    if mask is None or values is None:
+        print("no FeatureMask or %s in the result of %s (%s)" % (score, method, how))
+        return 1
+    with open(output, "w") as f:
+        f.write("%d\n" % partitions())
+        for i in range(result.GetNumberOfPoints()):
+            f.write("%d %r\n" % (mask.GetValue(i), values.GetValue(i)))
+    print("%s (%s): %d points, %d feature points, %d partitions"
+          % (method, how, result.GetNumberOfPoints(),
+             sum(mask.GetValue(i) for i in range(result.GetNumberOfPoints())), partitions()))
+    return 0
+
+
+# The script ends normally on success: a sys.exit() in pvbatch --mpi leaves the first process
+# without MPI_Finalize, and mpiexec then ends the others as an improper exit.
+if sys.argv[1] == "--probe":
+    probe(sys.argv[2])
+elif run(*sys.argv[1:5]) != 0:
     sys.exit(1)
-with open(output, "w") as f:
-    f.write("%d\n" % partitions())
-    for i in range(result.GetNumberOfPoints()):
-        f.write("%d %r\n" % (mask.GetValue(i), values.GetValue(i)))
-print("%s (%s): %d points, %d feature points, %d partitions"
-      % (method, how, result.GetNumberOfPoints(),
-         sum(mask.GetValue(i) for i in range(result.GetNumberOfPoints())), partitions()))
