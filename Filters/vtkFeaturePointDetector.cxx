@@ -523,6 +523,21 @@ void vtkFeaturePointDetector::ApplyThreshold(const float* score,
   this->NumberOfFeaturePoints = this->GlobalSum(features);
 }
 
+vtkIdType vtkFeaturePointDetector::GatherLayout(const std::vector<long long>& counts,
+  std::vector<vtkIdType>& lengths, std::vector<vtkIdType>& offsets)
+{
+  lengths.assign(counts.size(), 0);
+  offsets.assign(counts.size(), 0);
+  vtkIdType total = 0;
+  for (size_t p = 0; p < counts.size(); ++p)
+  {
+    lengths[p] = static_cast<vtkIdType>(counts[p]);
+    offsets[p] = total;
+    total += lengths[p];
+  }
+  return total;
+}
+
 void vtkFeaturePointDetector::GatherScores(
   std::vector<double>& scores, std::vector<int>* weights) const
 {
@@ -531,14 +546,8 @@ void vtkFeaturePointDetector::GatherScores(
   long long count = static_cast<long long>(scores.size());
   std::vector<long long> counts(nProcs, 0);
   this->Controller->Gather(&count, counts.data(), 1, 0);
-  std::vector<vtkIdType> lengths(nProcs), offsets(nProcs, 0);
-  vtkIdType total = 0;
-  for (int p = 0; p < nProcs; ++p)
-  {
-    lengths[p] = static_cast<vtkIdType>(counts[p]);
-    offsets[p] = total;
-    total += lengths[p];
-  }
+  std::vector<vtkIdType> lengths, offsets;
+  const vtkIdType total = GatherLayout(counts, lengths, offsets);
   std::vector<double> all(rank == 0 ? std::max<vtkIdType>(total, 1) : 1);
   this->Controller->GatherV(scores.data(), all.data(), static_cast<vtkIdType>(scores.size()),
     lengths.data(), offsets.data(), 0);

@@ -295,6 +295,12 @@ protected:
   void PrepareOwnership(vtkPointCloudNeighborhoods* neighborhoods);
   // Distributed runs: the scores (and weights) of every process, on the first process.
   void GatherScores(std::vector<double>& scores, std::vector<int>* weights) const;
+  /**
+   * Where each process's values lie in a gathered array: `lengths` from the processes' `counts`,
+   * `offsets` their running sum. Returns the total.
+   */
+  static vtkIdType GatherLayout(const std::vector<long long>& counts,
+    std::vector<vtkIdType>& lengths, std::vector<vtkIdType>& offsets);
 
   // Closes the running stage (if any) and starts timing the next one; nullptr only closes.
   void BeginStage(const char* name);

@@ -251,14 +251,8 @@ void vtkFeaturePointExtraction::PrepareProcesses(ScoredPoints& scored)
     long long count = static_cast<long long>(keys.size());
     std::vector<long long> counts(nProcs, 0);
     this->Controller->AllGather(&count, counts.data(), 1);
-    std::vector<vtkIdType> lengths(nProcs), offsets(nProcs, 0);
-    vtkIdType total = 0;
-    for (int q = 0; q < nProcs; ++q)
-    {
-      lengths[q] = static_cast<vtkIdType>(counts[q]);
-      offsets[q] = total;
-      total += lengths[q];
-    }
+    std::vector<vtkIdType> lengths, offsets;
+    const vtkIdType total = GatherLayout(counts, lengths, offsets);
     if (total == 0)
     {
       keys.clear();
