@@ -995,7 +995,12 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
         continue;
       }
       // Nothing explains even the smallest scale (its points are still gathered in s): more
-      // than two faces, a corner, or faces narrower than the smallest scale.
+      // than two faces, a corner, or faces narrower than the smallest scale. Its fit and its vote
+      // are those of the smallest scale: the widest fit straddles features that the smallest
+      // one at least separates, and a vote counted over the widest neighbourhood is diluted by
+      // the members that vote for the other features within it.
+      this->Fits[r] = fit;
+      this->Scale[r] = fit.Points;
       const double dof = std::max(fit.Points - 6, 0);
       if (std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), fit.Cross.RSS2) >
           DetailMisfit * dof * this->Variance &&
