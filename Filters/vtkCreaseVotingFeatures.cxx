@@ -73,12 +73,6 @@ constexpr double MinimumGain = 1.0;
 constexpr int ConnectionNeighbors = 8;
 // The smallest neighbourhood of the scale per point (a hinge of 2 x 3 parameters through noise).
 constexpr int SmallestScale = 20;
-// A neighbourhood of SmallestScale points that neither one quadric nor one hinge explains within
-// DetailMisfit times the noise variance per degree of freedom holds more than two faces: a
-// corner, or faces narrower than the smallest scale (ribs, grooves). Such points are feature
-// points. For pure noise the residual per degree of freedom is a chi-square over 14: it exceeds
-// 3 with probability about 1e-4.
-constexpr double DetailMisfit = 3.0;
 // A side of the curved hinge is a face when its quadric turns by at most a radian over the
 // side's radius (largest principal curvature times the radius): a cylinder's side, a large fillet.
 // A quadric that bends more is fitting a rib, a groove or a small fillet, which are features.
@@ -944,14 +938,11 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
   vtkSMPThreadLocal<Scratch> scratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     Scratch& s = scratch.Local();
-    // Whether the curved hinge explains the gathered points (two quadrics: 12 parameters),
-    // within the noise or, with `detail`, within DetailMisfit noise variances per degree of
-    // freedom.
-    auto curvedExplains = [&](const CreaseFit& fit, bool detail) {
+    // Whether the curved hinge explains the gathered points (two quadrics: 12 parameters)
+    // within the noise.
+    auto curvedExplains = [&](const CreaseFit& fit) {
       const double curved = FitCurvedHinge(s.P, fit.Hinge, s.Side);
-      const double bound = detail ? DetailMisfit * std::max(fit.Points - 12, 0)
-                                  : MisfitBound(fit.Points - 12);
-      return curved >= 0.0 && curved <= bound * this->Variance;
+      return curved >= 0.0 && curved <= MisfitBound(fit.Points - 12) * this->Variance;
     };
     for (vtkIdType r = begin; r < end; ++r)
     {
@@ -978,7 +969,7 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
           this->Scale[r] = scale;
           break;
         }
-        if (curvedScale == 0 && curvedExplains(fit, false))
+        if (curvedScale == 0 && curvedExplains(fit))
         {
           curvedFit = fit;
           curvedScale = scale;
@@ -994,17 +985,18 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
         this->Scale[r] = curvedScale;
         continue;
       }
-      // Nothing explains even the smallest scale (its points are still gathered in s): more
-      // than two faces, a corner, or faces narrower than the smallest scale. Its fit and its vote
-      // are those of the smallest scale: the widest fit straddles features that the smallest
-      // one at least separates, and a vote counted over the widest neighbourhood is diluted by
-      // the members that vote for the other features within it.
+      // Nothing explains even the smallest scale, not even the curved hinge: more than two
+      // faces, a corner, or faces narrower than the smallest scale. Its fit and its vote are
+      // those of the smallest scale: the widest fit straddles features that the smallest one at
+      // least separates, and a vote counted over the widest neighbourhood is diluted by the
+      // members that vote for the other features within it. The point is a feature point
+      // (a detail) unless the crossing planes, even where they do not cross, fit it within the
+      // noise: they take a third of a noise sample's residual, so that a detail is a
+      // neighbourhood that no model at all explains.
       this->Fits[r] = fit;
       this->Scale[r] = fit.Points;
-      const double dof = std::max(fit.Points - 6, 0);
       if (std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), fit.Cross.RSS2) >
-          DetailMisfit * dof * this->Variance &&
-        !curvedExplains(fit, true))
+        MisfitBound(fit.Points - 6) * this->Variance)
       {
         detail[this->Ids[r]] = 1;
       }

@@ -51,9 +51,9 @@
  *    never within a clean cloud's noise). Where nothing explains them at any scale, the
  *    smallest scale's fit and vote (the widest fit straddles features that the smallest at
  *    least separates; a vote counted over the widest neighbourhood is diluted by the members
- *    voting for the other features in it); where even that leaves more than 3 sigma^2 per
- *    degree of freedom (a corner, faces narrower than the smallest scale) the point is a
- *    feature point.
+ *    voting for the other features in it), and the point is a feature point (a corner, faces
+ *    narrower than the smallest scale) unless the crossing planes fit it within the noise even
+ *    where they do not cross.
  * 3. Crease line of the fit: the intersection of the two planes (when they are not parallel).
  * 4. Vote. A point j of P_i's neighbourhood (P_i included) votes for P_i when its two planes
  *    fit better than one (gain above 1), meet at MinimumAngle or more, and its crease line
