@@ -54,6 +54,11 @@ const double FacingCone = std::cos(vtkMath::RadiansFromDegrees(15.0)); // ends f
 constexpr int SmoothingPasses = 20;
 constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's points
 constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
+// In FitRadius: how far along the fitted curve the second fit takes its points, either side (a
+// vertex fit's slab holds about 20 points per face, from which a crease whose faces differ by
+// 30 degrees is placed along them within about 0.8 s only). The reference quadratic spans
+// twice it and must follow the curve's bend.
+constexpr double AlongLength = 2.5;
 constexpr double SectionCore = 1.0; // s: points this near the vertex do not fit the faces' lines
 const double MinimumCreaseAngle = std::sin(vtkMath::RadiansFromDegrees(10.0)); // flatter faces: no intersection
 // A feature point whose score is below this share of the detector's threshold was not voted for
@@ -359,6 +364,15 @@ private:
   V3 FitCrease(const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids,
     bool* found = nullptr) const;
   V3 FitBorder(const V3& x, const V3& e1, const V3& e2, const std::vector<vtkIdType>& ids) const;
+  // The same fits on points given in the cross-section's frame (and their normals there): the
+  // crease's or the border's position p in that frame; false when the points show none.
+  bool CreaseIn(const std::vector<Eigen::Vector2d>& section,
+    const std::vector<Eigen::Vector2d>& sectionNormals, Eigen::Vector2d& p) const;
+  bool BorderIn(const std::vector<Eigen::Vector2d>& section, Eigen::Vector2d& p) const;
+  // The fit again at vertex k of a fitted curve c (arc lengths `arc`), over the points within
+  // halfLength of it along the curve, each taken in the cross-section of the curve where it lies.
+  V3 FitAlong(const std::vector<V3>& c, const std::vector<double>& arc, bool closed, int k,
+    double halfLength) const;
   unsigned char LocalType(const V3& x) const;
   void RefitCorners(const std::vector<Chain>& chains, std::vector<std::vector<V3>>& curves) const;
 
@@ -1264,27 +1278,39 @@ unsigned char CurveRun::LocalType(const V3& x) const
 V3 CurveRun::FitCrease(const V3& x, const V3& e1, const V3& e2,
   const std::vector<vtkIdType>& ids, bool* found) const
 {
-  if (found)
-  {
-    *found = false;
-  }
-  // The faces: points split by the direction in which their normals, seen along the curve, vary
-  // most; then one 2D line per face, and their intersection.
   std::vector<Eigen::Vector2d> q, nq;
   for (vtkIdType i : ids)
   {
     const V3 r = this->Points[i] - x;
-    const Eigen::Vector2d p(r.dot(e1), r.dot(e2));
-    const Eigen::Vector2d nn(this->Normals[i].dot(e1), this->Normals[i].dot(e2));
-    if (p.norm() >= SectionCore * this->S && nn.norm() > 0.0)
+    q.emplace_back(r.dot(e1), r.dot(e2));
+    nq.emplace_back(this->Normals[i].dot(e1), this->Normals[i].dot(e2));
+  }
+  Eigen::Vector2d p;
+  const bool crease = this->CreaseIn(q, nq, p);
+  if (found)
+  {
+    *found = crease;
+  }
+  return crease ? V3(x + p[0] * e1 + p[1] * e2) : x;
+}
+
+bool CurveRun::CreaseIn(const std::vector<Eigen::Vector2d>& section,
+  const std::vector<Eigen::Vector2d>& sectionNormals, Eigen::Vector2d& p) const
+{
+  // The faces: points split by the direction in which their normals, seen along the curve, vary
+  // most; then one 2D line per face, and their intersection.
+  std::vector<Eigen::Vector2d> q, nq;
+  for (size_t k = 0; k < section.size(); ++k)
+  {
+    if (section[k].norm() >= SectionCore * this->S && sectionNormals[k].norm() > 0.0)
     {
-      q.push_back(p);
-      nq.push_back(nn.normalized());
+      q.push_back(section[k]);
+      nq.push_back(sectionNormals[k].normalized());
     }
   }
   if (q.size() < 10)
   {
-    return x;
+    return false;
   }
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const auto& nn : nq)
@@ -1326,7 +1352,7 @@ V3 CurveRun::FitCrease(const V3& x, const V3& e1, const V3& e2,
       }
       if (count[g] < 5)
       {
-        return x;
+        return false;
       }
       c[g] /= count[g];
       for (size_t k = 0; k < q.size(); ++k)
@@ -1366,10 +1392,9 @@ V3 CurveRun::FitCrease(const V3& x, const V3& e1, const V3& e2,
     p = c[0] + a * u[0];
     return p.allFinite();
   };
-  Eigen::Vector2d p;
   if (!intersect(p))
   {
-    return x;
+    return false;
   }
   // Then as a hinge: each point to the face on its side of the bisector of the two half-lines
   // from the crease. The nearest-line split takes the noise of one face near the crease for the
@@ -1432,15 +1457,7 @@ V3 CurveRun::FitCrease(const V3& x, const V3& e1, const V3& e2,
     }
     p = moved;
   }
-  if (!p.allFinite() || p.norm() > 2.0 * this->S)
-  {
-    return x;
-  }
-  if (found)
-  {
-    *found = true;
-  }
-  return x + p[0] * e1 + p[1] * e2;
+  return p.allFinite() && p.norm() <= 2.0 * this->S;
 }
 
 CurveRun::Bend CurveRun::BendAt(
@@ -1528,16 +1545,27 @@ V3 CurveRun::FitBorder(
   // The face's line in the cross-section; along it, the points fill [b, ...) evenly: over a window
   // [b, a0 + W] their mean is the window's middle, which gives b.
   std::vector<Eigen::Vector2d> q;
-  Eigen::Vector2d c = this->Project(ids, x, e1, e2, q);
+  this->Project(ids, x, e1, e2, q);
+  Eigen::Vector2d p;
+  return this->BorderIn(q, p) ? V3(x + p[0] * e1 + p[1] * e2) : x;
+}
+
+bool CurveRun::BorderIn(const std::vector<Eigen::Vector2d>& q, Eigen::Vector2d& p) const
+{
   if (q.size() < 10)
   {
-    return x;
+    return false;
+  }
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (const auto& a : q)
+  {
+    c += a;
   }
   c /= static_cast<double>(q.size());
   Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
-  for (const auto& p : q)
+  for (const auto& a : q)
   {
-    m += (p - c) * (p - c).transpose();
+    m += (a - c) * (a - c).transpose();
   }
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> line(m);
   Eigen::Vector2d u = line.eigenvectors().col(1);
@@ -1562,16 +1590,12 @@ V3 CurveRun::FitBorder(
     }
     if (count < 5)
     {
-      return x;
+      return false;
     }
     b = 2.0 * sum / count - (b + window);
   }
-  const Eigen::Vector2d p = c + b * u;
-  if (!p.allFinite() || p.norm() > 2.0 * this->S)
-  {
-    return x;
-  }
-  return x + p[0] * e1 + p[1] * e2;
+  p = c + b * u;
+  return p.allFinite() && p.norm() <= 2.0 * this->S;
 }
 
 Eigen::Vector2d CurveRun::Project(const std::vector<vtkIdType>& ids, const V3& x, const V3& e1,
@@ -1615,6 +1639,92 @@ V3 CurveRun::FitSection(const V3& x, const V3& t) const
   this->Section(x, t, SectionLength * this->R, ids, e1, e2);
   return this->LocalType(x) == BORDER ? this->FitBorder(x, e1, e2, ids)
                                       : this->FitCrease(x, e1, e2, ids);
+}
+
+V3 CurveRun::FitAlong(const std::vector<V3>& c, const std::vector<double>& arc, bool closed,
+  int k, double halfLength) const
+{
+  const int n = static_cast<int>(c.size()) - (closed ? 1 : 0); // distinct vertices
+  const double perimeter = arc.back();
+  if (n < 5)
+  {
+    return c[k];
+  }
+  // The reference: a quadratic in arc length, r(a) = r0 + r1 a + r2 a^2, through the curve's
+  // vertices within twice the window. The points are taken relative to it, so the fit gives
+  // the crease's mean offset from r over the window: r's own wander does not come back (a
+  // vertex-by-vertex reference would add its wander to the result), and r's bend follows the
+  // curve's (a straight slab would cut a bent curve's chord).
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d rhs = Eigen::Matrix3d::Zero();
+  int count = 0;
+  for (int j = 0; j < n; ++j)
+  {
+    double offset = arc[j] - arc[k];
+    if (closed)
+    {
+      offset -= perimeter * std::round(offset / perimeter);
+    }
+    if (std::abs(offset) <= 2.0 * halfLength)
+    {
+      const V3 basis(1.0, offset, offset * offset);
+      normal += basis * basis.transpose();
+      rhs += basis * (c[j] - c[k]).transpose();
+      ++count;
+    }
+  }
+  Eigen::LDLT<Eigen::Matrix3d> solver(normal);
+  const Eigen::Matrix3d coefficients = solver.solve(rhs);
+  if (count < 5 || solver.info() != Eigen::Success || !coefficients.allFinite())
+  {
+    return c[k];
+  }
+  const V3 r0 = c[k] + coefficients.row(0).transpose();
+  const V3 r1 = coefficients.row(1).transpose();
+  const V3 r2 = coefficients.row(2).transpose();
+  if (!(r1.squaredNorm() > 0.25))
+  {
+    return c[k];
+  }
+  const V3 t = r1.normalized();
+  const V3 e1 = t.unitOrthogonal();
+  const V3 e2 = t.cross(e1);
+  // Where an open curve ends, its points end: the window stops there.
+  const double first = closed ? -VTK_DOUBLE_MAX : arc[0] - arc[k] - 0.5 * this->H;
+  const double last = closed ? VTK_DOUBLE_MAX : arc[n - 1] - arc[k] + 0.5 * this->H;
+  const double across = SectionRadius * this->R;
+  std::vector<vtkIdType> ids;
+  this->AllSearch.Within(r0, across + halfLength, ids);
+  std::vector<Eigen::Vector2d> q, nq;
+  for (vtkIdType i : ids)
+  {
+    const V3& p = this->Points[i];
+    double a = (p - r0).dot(r1) / r1.squaredNorm();
+    for (int round = 0; round < 2; ++round) // Newton steps to the nearest point of r
+    {
+      const V3 d = r1 + 2.0 * a * r2;
+      a += (p - (r0 + a * r1 + a * a * r2)).dot(d) / d.squaredNorm();
+    }
+    if (std::abs(a) > halfLength || a < first || a > last)
+    {
+      continue;
+    }
+    const V3 ta = (r1 + 2.0 * a * r2).normalized();
+    V3 r = p - (r0 + a * r1 + a * a * r2);
+    r -= r.dot(ta) * ta;
+    if (r.squaredNorm() > across * across)
+    {
+      continue;
+    }
+    const V3 f1 = (e1 - e1.dot(ta) * ta).normalized();
+    const V3 f2 = ta.cross(f1);
+    q.emplace_back(r.dot(f1), r.dot(f2));
+    nq.emplace_back(this->Normals[i].dot(f1), this->Normals[i].dot(f2));
+  }
+  Eigen::Vector2d p;
+  const bool found =
+    this->LocalType(r0) == BORDER ? this->BorderIn(q, p) : this->CreaseIn(q, nq, p);
+  return found ? V3(r0 + p[0] * e1 + p[1] * e2) : c[k];
 }
 
 void Smooth(std::vector<V3>& x, bool closed, int passes)
@@ -1780,6 +1890,33 @@ std::vector<std::vector<V3>> CurveRun::FitCurves(const std::vector<Chain>& chain
     }
     Smooth(x, chain.Closed, SmoothingPasses);
     curves.push_back(x);
+  }
+  // Again, each inner vertex from the points along the fitted curve, over AlongLength either side:
+  // one vertex fit's slab holds too few points to place a shallow crease within the noise.
+  for (size_t c = 0; c < curves.size(); ++c)
+  {
+    const bool closed = chains[c].Closed;
+    std::vector<V3>& x = curves[c];
+    std::vector<double> arc(x.size(), 0.0);
+    for (size_t k = 1; k < x.size(); ++k)
+    {
+      arc[k] = arc[k - 1] + (x[k] - x[k - 1]).norm();
+    }
+    std::vector<V3> y = x;
+    const int n = static_cast<int>(x.size()) - (closed ? 1 : 0);
+    for (int k = closed ? 0 : 1; k < (closed ? n : n - 1); ++k)
+    {
+      if (!this->G.Node[chains[c].Ids[k]])
+      {
+        y[k] = this->FitAlong(x, arc, closed, k, AlongLength * this->R);
+      }
+    }
+    if (closed)
+    {
+      y.back() = y.front();
+    }
+    Smooth(y, closed, SmoothingPasses);
+    x = y;
   }
   this->RefitCorners(chains, curves);
   for (size_t c = 0; c < curves.size(); ++c)

@@ -48,7 +48,11 @@
  *    the bisector from the crease: the nearest-line split takes one face's noise for the other's
  *    and pulls the crease inside the bend); on a border, to the edge of the one face (the points' distribution across
  *    the edge tells where it lies). Then the vertices are smoothed along the curve (ends fixed) and
- *    resampled StepLength s apart.
+ *    fitted again over a longer stretch: the points within 2.5 FitRadius s along the smoothed
+ *    curve, each taken in the cross-section of a quadratic (in arc length) fitted to the curve
+ *    over twice that stretch, so that the points follow its bend; the fit gives the crease's
+ *    offset from that quadratic. Smoothed again (ends fixed), the curves are resampled
+ *    StepLength s apart.
  *
  * Output port 0: the input points (a vtkPolyData with vertex cells) with all point arrays and
  * `CurveId` (int): the curve of each feature point within 3 s of one (the nearest), -1 elsewhere.
