@@ -982,6 +982,32 @@ CreaseFit FitGathered(Scratch& s, double variance)
   return fit;
 }
 
+// Whether one plane explains the gathered points p within the noise (the bound of the quadric,
+// so that Explains() holds), as on most of a part's faces; then `fit` is that plane alone: no
+// line, no gain. Most points lie on faces, and the two-plane fit was most of the detector's
+// time; what it finds there is a hinge fitted on the noise, whose line falls anywhere. Near a
+// feature the points that one plane explains still cast votes that count: FitCreases() fits
+// those whose sheet holds a point that one plane does not explain.
+bool OnePlane(const std::vector<Eigen::Vector3d>& p, double variance, CreaseFit& fit)
+{
+  const int m = static_cast<int>(p.size());
+  Moments all;
+  for (const Eigen::Vector3d& q : p)
+  {
+    all.Add(q);
+  }
+  Eigen::Vector3d c, n;
+  double rss = 0.0;
+  if (m < 8 || !FitPlane(all, c, n, rss) || rss > MisfitBound(m - 6) * variance)
+  {
+    return false;
+  }
+  fit = CreaseFit();
+  fit.Points = m;
+  fit.RSS1 = fit.RSSQ = fit.Hinge.RSS2 = fit.Cross.RSS2 = rss;
+  return true;
+}
+
 void CreaseRun::FitCreases(const float* normal)
 {
   this->Fits.assign(static_cast<size_t>(this->Rows), CreaseFit());
@@ -998,6 +1024,8 @@ void CreaseRun::FitCreases(const float* normal)
     const int32_t* row = this->Row(r, first, width);
     std::copy(row, row + width, links.data() + this->Ids[r] * SheetLinks);
   }
+  // By point id: one plane explains its sheet's points (see OnePlane).
+  std::vector<unsigned char> flat(static_cast<size_t>(this->N), 0);
   vtkSMPThreadLocal<Scratch> scratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     Scratch& s = scratch.Local();
@@ -1014,7 +1042,39 @@ void CreaseRun::FitCreases(const float* normal)
         std::fill(sheet, sheet + this->Words, ~uint64_t(0));
       }
       this->GatherSheet(r, row, this->KFit, normal, s);
+      if (OnePlane(s.P, this->Variance, this->Fits[r]))
+      {
+        flat[this->Ids[r]] = 1;
+        continue;
+      }
       this->Fits[r] = FitGathered(s, this->Variance);
+    }
+  });
+  // The one-plane points with a point on their sheet that one plane does not explain: a
+  // feature in view, whose line their fit finds too (left out, Model II's recall at 0.5 s of
+  // noise falls from 0.945 to 0.895: the 15-degree creases lose those votes).
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    Scratch& s = scratch.Local();
+    s.Row.resize(static_cast<size_t>(this->K));
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      if (!flat[this->Ids[r]])
+      {
+        continue;
+      }
+      const int32_t* row = this->Row(r, s.Row.data());
+      const int count = featurepoints::RowLength(row, this->KFit);
+      const uint64_t* sheet = this->Sheet(r);
+      bool inView = false;
+      for (int j = 0; j < count && !inView; ++j)
+      {
+        inView = !flat[row[j]] && Reached(sheet, j + 1);
+      }
+      if (inView)
+      {
+        this->GatherSheet(r, row, this->KFit, normal, s);
+        this->Fits[r] = FitGathered(s, this->Variance);
+      }
     }
   });
 }
