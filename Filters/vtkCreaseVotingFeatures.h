@@ -14,7 +14,10 @@
  * 0. One sheet. Only the neighbours joined to P_i through links count, each point linked to its
  *    5 nearest (either way round): both sides of a wall about 5 spacings thick or more are then
  *    told apart (thin walls, shells, sheet metal). N below is the number of such points; with
- *    fewer than 8, the whole neighbourhood is used.
+ *    fewer than 8, the whole neighbourhood is used. Where one plane explains these points
+ *    within the noise (the bound of step 2b), and one plane likewise explains those of each of
+ *    its 40 nearest on the sheet, no feature is in view: the point gets that plane and no line
+ *    (steps 1-3 are skipped).
  * 1. Two-plane fit. The points are split in two by the direction in which their normals (PCA of
  *    the NormalNeighbors nearest, as Eq. 3 of the paper) vary most; then, as in k-means with
  *    planes, each side gets its least-squares plane and every point goes to the nearer plane,

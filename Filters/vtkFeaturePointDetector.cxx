@@ -471,6 +471,50 @@ bool vtkFeaturePointDetector::SearchAllPoints(vtkPoints* points, vtkIdType n, in
   return !this->GetAbortExecute();
 }
 
+bool vtkFeaturePointDetector::SearchAllPoints(vtkPoints* points, vtkIdType n, int k,
+  vtkPointCloudNeighborhoods* neighborhoods, std::vector<vtkIdType>& ids,
+  const std::function<void(vtkIdType, vtkIdType, const int32_t*)>& consume, double progressEnd)
+{
+  if (!this->PrepareNeighborhoods(points, n, k, neighborhoods))
+  {
+    return false;
+  }
+  this->BeginStage("neighbours");
+  ids = neighborhoods->GetValidIds();
+  // Blocks of consecutive rows: ids are in the grid's cell order, so that each block is a
+  // compact region and its batched query as fast as the whole table's. The nearest neighbour of
+  // each row is kept for the mean spacing, which reads only that.
+  constexpr vtkIdType Block = 16384;
+  const vtkIdType rows = static_cast<vtkIdType>(ids.size());
+  std::vector<int32_t> nearest(static_cast<size_t>(rows), -1), block;
+  std::vector<vtkIdType> blockIds;
+  for (vtkIdType first = 0; first < rows; first += Block)
+  {
+    const vtkIdType count = std::min(Block, rows - first);
+    blockIds.assign(ids.begin() + first, ids.begin() + first + count);
+    const double start = progressEnd * static_cast<double>(first) / static_cast<double>(rows);
+    const double end = progressEnd * static_cast<double>(first + count) / static_cast<double>(rows);
+    if (!neighborhoods->FindNearestNeighbors(k, blockIds, block, nullptr, this, start, end))
+    {
+      return false;
+    }
+    for (vtkIdType r = 0; r < count && k > 0; ++r)
+    {
+      nearest[first + r] = block[r * k];
+    }
+    consume(first, count, block.data());
+  }
+  const double d =
+    this->GlobalMeanSpacing(neighborhoods, neighborhoods->ComputeMeanSpacing(ids, nearest, 1));
+  if (!this->CheckSpacing(d, neighborhoods))
+  {
+    return false;
+  }
+  this->NumberOfCandidates = this->GlobalSum(this->CountOwned(ids));
+  this->BeginStage("scores");
+  return !this->GetAbortExecute();
+}
+
 void vtkFeaturePointDetector::ApplyThreshold(const float* score,
   const std::vector<vtkIdType>& ids, const std::vector<int>* weights,
   const unsigned char* eligible, unsigned char* mask)

@@ -40,10 +40,11 @@
 #include "FeaturePointsFiltersModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <chrono>  // For stage timing
-#include <cstdint> // For int32_t
-#include <string>  // For stage names
-#include <vector>  // For AutomaticThreshold
+#include <chrono>     // For stage timing
+#include <cstdint>    // For int32_t
+#include <functional> // For the block consumer
+#include <string>     // For stage names
+#include <vector>     // For AutomaticThreshold
 
 class vtkAbstractPointLocator;
 class vtkDataArray;
@@ -240,6 +241,17 @@ protected:
   bool SearchAllPoints(vtkPoints* points, vtkIdType n, int k,
     vtkPointCloudNeighborhoods* neighborhoods, std::vector<vtkIdType>& ids,
     std::vector<int32_t>& table, double progressEnd);
+
+  /**
+   * The same, the table handed to `consume(firstRow, rows, block)` in blocks of consecutive rows
+   * (rows firstRow to firstRow + rows - 1, k entries each, the rows of `ids` in order) instead of
+   * kept whole: a method that stores the table in a form of its own never holds all of it in
+   * 32-bit ids. The rows and the mean spacing are those of the other form.
+   */
+  bool SearchAllPoints(vtkPoints* points, vtkIdType n, int k,
+    vtkPointCloudNeighborhoods* neighborhoods, std::vector<vtkIdType>& ids,
+    const std::function<void(vtkIdType, vtkIdType, const int32_t*)>& consume,
+    double progressEnd);
 
   /**
    * Sets ThresholdUsed (AUTOMATIC rule over the scores of `ids`, each counted `weights[r]` times
