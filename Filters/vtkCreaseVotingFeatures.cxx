@@ -1437,8 +1437,10 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
                                      : vtkCreaseVotingFeatures::CONCAVE;
     }
   }
-  // The unit direction of every feature point that has one, once.
+  // The unit direction of every feature point that has one, once, and a point of its line
+  // relative to it (the crease line's; the border point itself).
   std::vector<float> direction(3 * static_cast<size_t>(this->N), 0.0f);
+  std::vector<float> anchor(3 * static_cast<size_t>(this->N), 0.0f);
   std::vector<unsigned char> directed(static_cast<size_t>(this->N), 0);
   vtkSMPThreadLocal<std::vector<double>> scratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
@@ -1453,6 +1455,8 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
         for (int c = 0; c < 3; ++c)
         {
           direction[3 * id + c] = static_cast<float>(t[c]);
+          anchor[3 * id + c] =
+            type[id] == vtkCreaseVotingFeatures::BORDER ? 0.0f : this->Fits[r].Hinge.LinePoint[c];
         }
       }
     }
@@ -1476,6 +1480,9 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
       const double reach2 = reach * reach;
       this->Reader.Get(id, x);
       Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+      // The point nearest all the lines (least squares, relative to the point): where the
+      // curves meet. sum (I - t t^T) c = sum (I - t t^T) a, a on each line.
+      Eigen::Vector3d meet = Eigen::Vector3d::Zero();
       int directions = 0;
       for (int j = -1; j < length; ++j)
       {
@@ -1491,7 +1498,11 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
         }
         const Eigen::Vector3d v(
           direction[3 * other], direction[3 * other + 1], direction[3 * other + 2]);
+        const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - v * v.transpose();
+        const Eigen::Vector3d a(y[0] - x[0] + anchor[3 * other], y[1] - x[1] + anchor[3 * other + 1],
+          y[2] - x[2] + anchor[3 * other + 2]);
         spread += v * v.transpose();
+        meet += across * a;
         ++directions;
       }
       if (directions < MinimumCornerDirections)
@@ -1500,7 +1511,17 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
       }
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
       solver.computeDirect(spread / directions);
-      corner[id] = 1.0 - solver.eigenvalues()[2] > CornerSpread ? 1 : 0;
+      if (!(1.0 - solver.eigenvalues()[2] > CornerSpread))
+      {
+        continue;
+      }
+      // A corner point's smallest-scale neighbourhood holds the meeting point. The directions
+      // spread all along the curves as far as the reach from the corner; a point further out
+      // than the smallest scale's radius is on one of the curves, typed by its fit.
+      const Eigen::Matrix3d normalMatrix = directions * Eigen::Matrix3d::Identity() - spread;
+      const Eigen::Vector3d c = normalMatrix.ldlt().solve(meet);
+      const double smallest = reach / CornerReachScales;
+      corner[id] = c.squaredNorm() <= smallest * smallest ? 1 : 0;
     }
   });
   for (vtkIdType id : this->Ids)

@@ -86,7 +86,10 @@
  *    and calls the point a corner when at least 6 of them leave more than 0.18 of the mean of
  *    t t^T off its main direction (1 minus its largest eigenvalue: 0.18 is reached by two
  *    curves at right angles sharing the directions 82:18, by three with 82 % on one, or by one
- *    curve bending by 42 degrees either way across the reach).
+ *    curve bending by 42 degrees either way across the reach), and the point where their lines
+ *    meet (least squares; a crease's line, the border through its outermost row) lies within
+ *    the radius of its smallest scale: the directions spread wherever the reach holds two
+ *    curves, as far along each curve as the reach; the corner is where they meet.
  * 9. ThinFeatures: the crease and corner points whose consensus distance to the crease, the
  *    median distance to the lines that vote for them (no single noisy fit places the line as
  *    well), is within half their local spacing, widened by the noise: sqrt((s/2)^2 + sigma^2),
