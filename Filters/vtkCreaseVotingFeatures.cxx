@@ -1499,8 +1499,8 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
         const Eigen::Vector3d v(
           direction[3 * other], direction[3 * other + 1], direction[3 * other + 2]);
         const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - v * v.transpose();
-        const Eigen::Vector3d a(y[0] - x[0] + anchor[3 * other], y[1] - x[1] + anchor[3 * other + 1],
-          y[2] - x[2] + anchor[3 * other + 2]);
+        const Eigen::Vector3d a(y[0] - x[0] + anchor[3 * other],
+          y[1] - x[1] + anchor[3 * other + 1], y[2] - x[2] + anchor[3 * other + 2]);
         spread += v * v.transpose();
         meet += across * a;
         ++directions;
