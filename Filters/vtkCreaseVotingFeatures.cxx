@@ -99,14 +99,23 @@ constexpr double Pi = 3.14159265358979323846;
 // its BorderNeighbors / 2 nearest) fewer than BorderNeighbors / 2 are dropped.
 constexpr int BorderNeighbors = 50;
 constexpr double BorderGap = 2.0 * Pi / 3.0;
-// Corners: the directions t of the feature points around a point spread, the middle eigenvalue
-// of the mean of t t^T above CornerSpread, over at least MinimumCornerDirections feature points.
-// Two curves at an angle theta holding shares f and 1 - f of the points give
-// (1 - sqrt(1 - 4 f (1 - f) sin^2 theta)) / 2: min(f, 1 - f) at 90 degrees, 0.25 for equal
-// shares at 60 degrees; three curves at right angles in equal shares 1/3; one curve bending
-// by +-a across the neighbourhood about a^2 / 3 (0.18 needs a bend of +-42 degrees).
+// Corners: the directions t of the feature points around a point spread: the share of the mean
+// of t t^T (trace 1) off its main direction, 1 minus its largest eigenvalue, above CornerSpread,
+// over at least MinimumCornerDirections feature points. Two curves at an angle theta holding
+// shares f and 1 - f of the points give (1 - sqrt(1 - 4 f (1 - f) sin^2 theta)) / 2: min(f, 1 - f)
+// at 90 degrees, 0.25 for equal shares at 60 degrees; three curves at right angles with shares
+// f1 >= f2 >= f3, 1 - f1 (2/3 for equal shares); one curve bending by +-a across the
+// neighbourhood about a^2 / 3 (0.18 needs a bend of +-42 degrees). The middle eigenvalue alone,
+// used before, is f2 at a three-curve corner: the corners of boxes and brackets, where one crease
+// near the corner has most of the directions (f1 0.7, f2 and f3 0.15), went untyped.
 constexpr double CornerSpread = 0.18;
 constexpr int MinimumCornerDirections = 6;
+// The directions come from the feature points within CornerReachScales radii of the point's
+// SmallestScale nearest (on its sheet). Around a corner no fit of even the smallest scale is
+// explained within about that radius, so the creases that meet there give no direction there;
+// a point near the corner must reach past that zone along each of them by as much again to
+// collect comparable samples of each.
+constexpr double CornerReachScales = 2.0;
 
 // Moments of a set of points: count, sum, sum of outer products (upper triangle). The points are
 // relative to the fitted point, a few spacings long, so the one-pass covariance loses nothing.
@@ -862,9 +871,9 @@ struct CreaseRun
   // The border band: points within bandWidth d of a border point (among their kb nearest)
   // join it, as the crease band does.
   void WidenBorders(int kb, double bandWidth, unsigned char* border) const;
-  // FeatureType of the mask's points.
+  // FeatureType of the mask's points; minAngle as for the vote, kb as for the borders.
   void ClassifyFeatures(const unsigned char* mask, const unsigned char* border,
-    const float* outward, const float* normal, int kc, unsigned char* type) const;
+    const float* outward, double minAngle, int kb, unsigned char* type) const;
   // One point wide: keeps the crease and corner points whose consensus distance to the crease
   // (Offset) is within half their local spacing (of the ks nearest), widened by the noise, and
   // across each border the outermost points (among their kt nearest).
@@ -879,9 +888,13 @@ private:
   double LocalSpacing(vtkIdType r, int ks) const;
   // Distance from a point at offset v of the fitted point to row r's line.
   double LineDistance(vtkIdType r, const double v[3]) const;
-  // The crease direction of a feature point: its fit's line, or along its border.
-  bool Direction(vtkIdType id, const unsigned char* type, const float* outward,
-    const float* normal, double t[3]) const;
+  // The unit direction of row r's feature point: its fit's crease line, or along its border (the
+  // tangent plane of its kb nearest); false where it has none.
+  bool Direction(vtkIdType r, const unsigned char* type, const float* outward, double minAngle,
+    int kb, std::vector<double>& q, double t[3]) const;
+  // How far from row r's point the corner test looks: CornerReachScales times the radius of its
+  // SmallestScale nearest on its sheet.
+  double CornerReach(vtkIdType r) const;
 };
 
 void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
@@ -1486,31 +1499,93 @@ void CreaseRun::WidenBorders(int kb, double bandWidth, unsigned char* border) co
   }
 }
 
-bool CreaseRun::Direction(vtkIdType id, const unsigned char* type, const float* outward,
-  const float* normal, double t[3]) const
+bool CreaseRun::Direction(vtkIdType r, const unsigned char* type, const float* outward,
+  double minAngle, int kb, std::vector<double>& q, double t[3]) const
 {
+  const vtkIdType id = this->Ids[r];
   if (type[id] == vtkCreaseVotingFeatures::BORDER)
   {
-    // Along the border: normal x outward.
-    const float* u = outward + 3 * id;
-    const float* n = normal + 3 * id;
-    t[0] = n[1] * u[2] - n[2] * u[1];
-    t[1] = n[2] * u[0] - n[0] * u[2];
-    t[2] = n[0] * u[1] - n[1] * u[0];
+    // Along the border: the normal of the tangent plane in which FindBorders() saw the empty
+    // sector, crossed with the outward direction. Not the point's own normal: on the rim of a
+    // thin wall the NormalNeighbors nearest hold the rim face, whose normal is the outward
+    // direction itself. Points that joined the border band (WidenBorders()) have no outward
+    // direction, and give none.
+    const Eigen::Vector3d u(outward[3 * id], outward[3 * id + 1], outward[3 * id + 2]);
+    if (u.squaredNorm() < 0.5)
+    {
+      return false;
+    }
+    std::vector<int32_t> buffer(static_cast<size_t>(this->K));
+    const int32_t* row = this->Row(r, buffer.data());
+    const int length = featurepoints::RowLength(row, this->KFit);
+    const uint64_t* sheet = this->Sheet(r);
+    double x[3], y[3], lambda[3], nrm[3];
+    const double none[3] = { 0.0, 0.0, 0.0 };
+    q.clear();
+    this->Reader.Get(id, x);
+    for (int j = 0; j < length && static_cast<int>(q.size()) < 3 * kb; ++j)
+    {
+      if (Reached(sheet, j + 1))
+      {
+        this->Reader.Get(row[j], y);
+        q.insert(q.end(), { y[0] - x[0], y[1] - x[1], y[2] - x[2] });
+      }
+    }
+    if (!featurepoints::LocalPCA(q.data(), static_cast<int>(q.size() / 3), true, none, lambda, nrm))
+    {
+      return false;
+    }
+    const Eigen::Vector3d along = Eigen::Vector3d(nrm[0], nrm[1], nrm[2]).cross(u);
+    const double norm = along.norm();
+    if (!(norm > 0.5))
+    {
+      return false;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      t[c] = along[c] / norm;
+    }
     return true;
   }
-  // Only a line that explains its neighbourhood gives a direction: the crossing planes of a
-  // corner run anywhere.
-  const CreaseFit& fit = this->Fits[this->RowOf[id]];
+  // Only a crease line that explains its neighbourhood and votes gives a direction: the crossing
+  // planes of a corner run anywhere, and the hinge of a smooth patch is no crease.
+  const CreaseFit& fit = this->Fits[r];
   for (int c = 0; c < 3; ++c)
   {
     t[c] = fit.Hinge.LineDirection[c];
   }
-  return fit.Hinge.HasLine && fit.Explained;
+  return fit.Hinge.HasLine && fit.Explained && this->Gain[r] > MinimumGain &&
+    !(fit.Hinge.Angle < minAngle);
+}
+
+double CreaseRun::CornerReach(vtkIdType r) const
+{
+  std::vector<int32_t> buffer(static_cast<size_t>(this->K));
+  const int32_t* row = this->Row(r, buffer.data());
+  const int length = featurepoints::RowLength(row, this->KFit);
+  const uint64_t* sheet = this->Sheet(r);
+  int members = 0;
+  int last = -1;
+  for (int j = 0; j < length && members < SmallestScale; ++j)
+  {
+    if (Reached(sheet, j + 1))
+    {
+      ++members;
+      last = j;
+    }
+  }
+  if (last < 0)
+  {
+    return 0.0;
+  }
+  double x[3], y[3];
+  this->Reader.Get(this->Ids[r], x);
+  this->Reader.Get(row[last], y);
+  return CornerReachScales * std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
 }
 
 void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char* border,
-  const float* outward, const float* normal, int kc, unsigned char* type) const
+  const float* outward, double minAngle, int kb, unsigned char* type) const
 {
   // Creases and borders first: a border point is a border; a crease point is typed by its fit.
   for (vtkIdType r = 0; r < this->Rows; ++r)
@@ -1523,11 +1598,36 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
                                      : vtkCreaseVotingFeatures::CONCAVE;
     }
   }
-  // Corners: the feature points among the kc nearest on the sheet run in more than one
-  // direction (see CornerSpread).
+  // The unit direction of every feature point that has one, once, and a point of its line
+  // relative to it (the crease line's; the border point itself).
+  std::vector<float> direction(3 * static_cast<size_t>(this->N), 0.0f);
+  std::vector<float> anchor(3 * static_cast<size_t>(this->N), 0.0f);
+  std::vector<unsigned char> directed(static_cast<size_t>(this->N), 0);
+  vtkSMPThreadLocal<std::vector<double>> scratch;
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<double>& q = scratch.Local();
+    double t[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      if (mask[id] && this->Direction(r, type, outward, minAngle, kb, q, t))
+      {
+        directed[id] = 1;
+        for (int c = 0; c < 3; ++c)
+        {
+          direction[3 * id + c] = static_cast<float>(t[c]);
+          anchor[3 * id + c] =
+            type[id] == vtkCreaseVotingFeatures::BORDER ? 0.0f : this->Fits[r].Hinge.LinePoint[c];
+        }
+      }
+    }
+  });
+  // Corners: the directions of the feature points on the sheet within CornerReach() spread in
+  // more than one direction (see CornerSpread).
   std::vector<unsigned char> corner(static_cast<size_t>(this->N), 0);
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     std::vector<int32_t> buffer(static_cast<size_t>(this->K));
+    double x[3], y[3];
     for (vtkIdType r = begin; r < end; ++r)
     {
       const vtkIdType id = this->Ids[r];
@@ -1538,23 +1638,34 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
       const int32_t* row = this->Row(r, buffer.data());
       const int length = featurepoints::RowLength(row, this->KFit);
       const uint64_t* sheet = this->Sheet(r);
+      const double reach = this->CornerReach(r);
+      const double reach2 = reach * reach;
+      this->Reader.Get(id, x);
       Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
-      int directions = 0, seen = 0;
-      for (int j = -1; j < length && seen < kc; ++j)
+      // The point nearest all the lines (least squares, relative to the point): where the
+      // curves meet. sum (I - t t^T) c = sum (I - t t^T) a, a on each line.
+      Eigen::Vector3d meet = Eigen::Vector3d::Zero();
+      int directions = 0;
+      for (int j = -1; j < length; ++j)
       {
-        if (!Reached(sheet, j + 1))
+        const vtkIdType other = j < 0 ? id : static_cast<vtkIdType>(row[j]);
+        if (!Reached(sheet, j + 1) || !directed[other])
         {
           continue;
         }
-        ++seen;
-        const vtkIdType other = j < 0 ? id : static_cast<vtkIdType>(row[j]);
-        double t[3];
-        if (mask[other] && this->Direction(other, type, outward, normal, t))
+        this->Reader.Get(other, y);
+        if (vtkMath::Distance2BetweenPoints(x, y) > reach2)
         {
-          const Eigen::Vector3d v(t[0], t[1], t[2]);
-          spread += v * v.transpose();
-          ++directions;
+          break; // the row is sorted by distance
         }
+        const Eigen::Vector3d v(
+          direction[3 * other], direction[3 * other + 1], direction[3 * other + 2]);
+        const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - v * v.transpose();
+        const Eigen::Vector3d a(y[0] - x[0] + anchor[3 * other],
+          y[1] - x[1] + anchor[3 * other + 1], y[2] - x[2] + anchor[3 * other + 2]);
+        spread += v * v.transpose();
+        meet += across * a;
+        ++directions;
       }
       if (directions < MinimumCornerDirections)
       {
@@ -1562,7 +1673,17 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
       }
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
       solver.computeDirect(spread / directions);
-      corner[id] = solver.eigenvalues()[1] > CornerSpread ? 1 : 0;
+      if (!(1.0 - solver.eigenvalues()[2] > CornerSpread))
+      {
+        continue;
+      }
+      // A corner point's smallest-scale neighbourhood holds the meeting point. The directions
+      // spread all along the curves as far as the reach from the corner; a point further out
+      // than the smallest scale's radius is on one of the curves, typed by its fit.
+      const Eigen::Matrix3d normalMatrix = directions * Eigen::Matrix3d::Identity() - spread;
+      const Eigen::Vector3d c = normalMatrix.ldlt().solve(meet);
+      const double smallest = reach / CornerReachScales;
+      corner[id] = c.squaredNorm() <= smallest * smallest ? 1 : 0;
     }
   });
   for (vtkIdType id : this->Ids)
@@ -1763,7 +1884,7 @@ int vtkCreaseVotingFeatures::RequestData(
     }
   }
   unsigned char* type = types->GetPointer(0);
-  run.ClassifyFeatures(m, border.data(), outward.data(), normal, BorderNeighbors, type);
+  run.ClassifyFeatures(m, border.data(), outward.data(), this->MinimumAngle, BorderNeighbors, type);
   if (this->ThinFeatures)
   {
     this->BeginStage("thin");

@@ -82,10 +82,21 @@
  * 7. Borders (Borders): a point whose 50 nearest on its sheet leave an empty sector above 120
  *    degrees in their tangent plane is on a border (sets of fewer than 25 connected such points,
  *    the rims of voids in the sampling, are dropped); the points within BandWidth d of it join.
- * 8. FeatureType: BORDER, else CORNER where the directions of the explained crease lines and
- *    borders among the 50 nearest feature points spread (middle eigenvalue of the mean of t t^T
- *    above 0.18), else CONVEX or CONCAVE by the side of the line the fitted planes' centroids
- *    lie on, against the point's normal.
+ * 8. FeatureType: BORDER, else CONVEX or CONCAVE by the side of the line the fitted planes'
+ *    centroids lie on, against the point's normal; then CORNER where the directions of the
+ *    feature points around the point run more than one way. A crease point's direction is its
+ *    crease line, where its fit explains its neighbourhood and votes; a border point's is along
+ *    the border, in the tangent plane of its 50 nearest on the sheet (on a thin wall's rim the
+ *    point's own normal is the rim face's, across the border). Around a corner not even the
+ *    smallest scale's fit is explained (three faces), so the creases give no direction within
+ *    about that scale's radius of it: the test takes the directions within twice that radius,
+ *    and calls the point a corner when at least 6 of them leave more than 0.18 of the mean of
+ *    t t^T off its main direction (1 minus its largest eigenvalue: 0.18 is reached by two
+ *    curves at right angles sharing the directions 82:18, by three with 82 % on one, or by one
+ *    curve bending by 42 degrees either way across the reach), and the point where their lines
+ *    meet (least squares; a crease's line, the border through its outermost row) lies within
+ *    the radius of its smallest scale: the directions spread wherever the reach holds two
+ *    curves, as far along each curve as the reach; the corner is where they meet.
  * 9. ThinFeatures: the crease and corner points whose consensus distance to the crease, the
  *    median distance to the lines that vote for them (no single noisy fit places the line as
  *    well), is within half their local spacing, widened by the noise: sqrt((s/2)^2 + sigma^2),

@@ -34,7 +34,7 @@ def test_example_reads_detects_writes_and_renders(tmp_path):
                           text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     assert "556 feature points of 6002;" in done.stdout
-    assert "convex 85, concave 0, corner 39, border 432" in done.stdout
+    assert "convex 85, concave 0, corner 58, border 413" in done.stdout
     reader = vtkPointCloudReader()
     reader.SetFileName(prefix + ".vtp")
     reader.Update()
