@@ -895,6 +895,9 @@ private:
   // How far from row r's point the corner test looks: CornerReachScales times the radius of its
   // SmallestScale nearest on its sheet.
   double CornerReach(vtkIdType r) const;
+  // The kb nearest members of row r's sheet (the point excluded), as x, y, z relative to the
+  // point in q; `buffer` holds K ids.
+  void GatherSheetNearest(vtkIdType r, int kb, int32_t* buffer, std::vector<double>& q) const;
 };
 
 void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
@@ -1332,6 +1335,25 @@ bool MaybeWideGap(const double* q, int count, const Eigen::Vector3d& e1, const E
   return (empty & next) != 0;
 }
 
+void CreaseRun::GatherSheetNearest(
+  vtkIdType r, int kb, int32_t* buffer, std::vector<double>& q) const
+{
+  const int32_t* row = this->Row(r, buffer);
+  const int length = featurepoints::RowLength(row, this->KFit);
+  const uint64_t* sheet = this->Sheet(r);
+  double x[3], y[3];
+  q.clear();
+  this->Reader.Get(this->Ids[r], x);
+  for (int j = 0; j < length && static_cast<int>(q.size()) < 3 * kb; ++j)
+  {
+    if (Reached(sheet, j + 1))
+    {
+      this->Reader.Get(row[j], y);
+      q.insert(q.end(), { y[0] - x[0], y[1] - x[1], y[2] - x[2] });
+    }
+  }
+}
+
 void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
 {
   struct BorderScratch
@@ -1347,21 +1369,9 @@ void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
     for (vtkIdType r = begin; r < end; ++r)
     {
       const vtkIdType id = this->Ids[r];
-      const int32_t* row = this->Row(r, buffer.data());
-      const int length = featurepoints::RowLength(row, this->KFit);
-      const uint64_t* sheet = this->Sheet(r);
       // The point's kb nearest on its own sheet: on a thin wall (both sides one sheet) they
       // fold back on each other at the rim, which then shows as a border too.
-      q.clear();
-      this->Reader.Get(id, x);
-      for (int j = 0; j < length && static_cast<int>(q.size()) < 3 * kb; ++j)
-      {
-        if (Reached(sheet, j + 1))
-        {
-          this->Reader.Get(row[j], y);
-          q.insert(q.end(), { y[0] - x[0], y[1] - x[1], y[2] - x[2] });
-        }
-      }
+      this->GatherSheetNearest(r, kb, buffer.data(), q);
       const int count = static_cast<int>(q.size() / 3);
       if (count < kb || !featurepoints::LocalPCA(q.data(), count, true, none, lambda, nrm))
       {
@@ -1516,21 +1526,9 @@ bool CreaseRun::Direction(vtkIdType r, const unsigned char* type, const float* o
       return false;
     }
     std::vector<int32_t> buffer(static_cast<size_t>(this->K));
-    const int32_t* row = this->Row(r, buffer.data());
-    const int length = featurepoints::RowLength(row, this->KFit);
-    const uint64_t* sheet = this->Sheet(r);
-    double x[3], y[3], lambda[3], nrm[3];
+    double lambda[3], nrm[3];
     const double none[3] = { 0.0, 0.0, 0.0 };
-    q.clear();
-    this->Reader.Get(id, x);
-    for (int j = 0; j < length && static_cast<int>(q.size()) < 3 * kb; ++j)
-    {
-      if (Reached(sheet, j + 1))
-      {
-        this->Reader.Get(row[j], y);
-        q.insert(q.end(), { y[0] - x[0], y[1] - x[1], y[2] - x[2] });
-      }
-    }
+    this->GatherSheetNearest(r, kb, buffer.data(), q);
     if (!featurepoints::LocalPCA(q.data(), static_cast<int>(q.size() / 3), true, none, lambda, nrm))
     {
       return false;
