@@ -230,7 +230,17 @@ MPI_Comm CommOf(vtkMultiProcessController* controller)
   return communicator ? *communicator->GetMPIComm()->GetHandle() : MPI_COMM_NULL;
 }
 
+// True on every process when `ok` holds on all of them (a collective: every process calls it).
+bool AllAgree(MPI_Comm comm, bool ok)
+{
+  int mine = ok ? 1 : 0, all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, comm);
+  return all != 0;
+}
+
 // Each process sends rows[send[q]] to process q; returns what it receives, by source process.
+// A collective: false on every process when any one's buffers would pass 2 GB (MPI's int
+// counts), so that none waits in an exchange the others left.
 bool Exchange(MPI_Comm comm, const Layout& layout, const Rows& rows,
   const std::vector<std::vector<vtkIdType>>& send, Rows& received)
 {
@@ -239,16 +249,18 @@ bool Exchange(MPI_Comm comm, const Layout& layout, const Rows& rows,
   const size_t rowBytes = layout.RowBytes();
   std::vector<int> sendCounts(nProcs), sendOffsets(nProcs), recvCounts(nProcs), recvOffsets(nProcs);
   long long total = 0;
-  for (int q = 0; q < nProcs; ++q)
+  bool fits = true;
+  for (int q = 0; q < nProcs && fits; ++q)
   {
     const long long bytes = static_cast<long long>(send[q].size() * rowBytes);
-    if (bytes > INT_MAX || total + bytes > INT_MAX)
-    {
-      return false;
-    }
-    sendCounts[q] = static_cast<int>(bytes);
-    sendOffsets[q] = static_cast<int>(total);
-    total += bytes;
+    fits = bytes <= INT_MAX && total + bytes <= INT_MAX;
+    sendCounts[q] = fits ? static_cast<int>(bytes) : 0;
+    sendOffsets[q] = fits ? static_cast<int>(total) : 0;
+    total += fits ? bytes : 0;
+  }
+  if (!AllAgree(comm, fits))
+  {
+    return false;
   }
   std::vector<unsigned char> out(std::max<long long>(total, 1));
   for (int q = 0; q < nProcs; ++q)
@@ -262,14 +274,15 @@ bool Exchange(MPI_Comm comm, const Layout& layout, const Rows& rows,
   }
   MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, comm);
   long long totalIn = 0;
-  for (int q = 0; q < nProcs; ++q)
+  for (int q = 0; q < nProcs && fits; ++q)
   {
-    if (totalIn + recvCounts[q] > INT_MAX)
-    {
-      return false;
-    }
-    recvOffsets[q] = static_cast<int>(totalIn);
-    totalIn += recvCounts[q];
+    fits = totalIn + recvCounts[q] <= INT_MAX;
+    recvOffsets[q] = fits ? static_cast<int>(totalIn) : 0;
+    totalIn += fits ? recvCounts[q] : 0;
+  }
+  if (!AllAgree(comm, fits))
+  {
+    return false;
   }
   std::vector<unsigned char> in(std::max<long long>(totalIn, 1));
   MPI_Alltoallv(out.data(), sendCounts.data(), sendOffsets.data(), MPI_BYTE, in.data(),
@@ -310,10 +323,7 @@ bool GatherInOrder(MPI_Comm comm, const Layout& layout, const Rows& rows, Rows& 
     }
     ok = ok && total <= INT_MAX;
   }
-  MPI_Bcast(&ok, 1, MPI_INT, 0, comm);
-  int allOk = 0;
-  MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm);
-  if (!allOk)
+  if (!AllAgree(comm, ok != 0))
   {
     return false;
   }
@@ -836,9 +846,7 @@ int vtkDistributedFeaturePoints::RequestData(
       send[Finite(x) ? Owner(nodes, x) : rank].push_back(i);
     }
     Rows received;
-    ok = Exchange(comm, layout, mine, send, received) ? 1 : 0;
-    controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
-    if (!allOk)
+    if (!Exchange(comm, layout, mine, send, received))
     {
       vtkErrorMacro("Cannot split the cloud: a piece holds more than 2 GB.");
       return 0;
@@ -870,7 +878,11 @@ int vtkDistributedFeaturePoints::RequestData(
           std::upper_bound(firstGid.begin(), firstGid.end(), own.Gid[i]) - firstGid.begin() - 1);
         home[q].push_back(i);
       }
-      Exchange(comm, layout, own, home, mine);
+      if (!Exchange(comm, layout, own, home, mine))
+      {
+        vtkErrorMacro("Cannot gather the cloud back: a piece holds more than 2 GB.");
+        return 0;
+      }
     }
   }
 
@@ -1073,9 +1085,7 @@ int vtkDistributedFeaturePoints::RequestData(
       }
     }
     Rows halo;
-    ok = Exchange(comm, layout, own, send, halo) ? 1 : 0;
-    controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
-    if (!allOk)
+    if (!Exchange(comm, layout, own, send, halo))
     {
       vtkErrorMacro("Cannot build the halos: a piece holds more than 2 GB.");
       return 0;
