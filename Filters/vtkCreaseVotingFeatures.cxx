@@ -876,9 +876,10 @@ struct CreaseRun
     const float* outward, double minAngle, int kb, unsigned char* type) const;
   // One point wide: keeps the crease and corner points whose consensus distance to the crease
   // (Offset) is within half their local spacing (of the ks nearest), widened by the noise, and
-  // across each border the outermost points (among their kt nearest).
-  vtkIdType Thin(
-    const unsigned char* type, const float* outward, int kt, int ks, unsigned char* mask) const;
+  // whose vote reaches `trusted` (enough voters for the distance to be a consensus), and across
+  // each border the outermost points (among their kt nearest).
+  vtkIdType Thin(const unsigned char* type, const float* outward, const float* vote,
+    double trusted, int kt, int ks, unsigned char* mask) const;
 
 private:
   // The members of row r's sheet (row: its neighbours), nearest first, at most `count` of them besides the point,
@@ -1693,8 +1694,8 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
   }
 }
 
-vtkIdType CreaseRun::Thin(
-  const unsigned char* type, const float* outward, int kt, int ks, unsigned char* mask) const
+vtkIdType CreaseRun::Thin(const unsigned char* type, const float* outward, const float* vote,
+  double trusted, int kt, int ks, unsigned char* mask) const
 {
   std::vector<unsigned char> keep(static_cast<size_t>(this->N), 0);
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
@@ -1711,9 +1712,10 @@ vtkIdType CreaseRun::Thin(
       this->Reader.Get(id, x);
       if (type[id] != vtkCreaseVotingFeatures::BORDER)
       {
-        // Creases and corners: within half the local spacing of the crease, widened by the noise.
+        // Creases and corners: enough voters for a consensus line, and within half the local
+        // spacing of it, widened by the noise.
         const double half = 0.5 * this->LocalSpacing(r, ks);
-        keep[id] = this->Offset[id] >= 0.0f &&
+        keep[id] = this->Offset[id] >= 0.0f && !(vote[id] < trusted) &&
             this->Offset[id] <= std::sqrt(half * half + this->Variance)
           ? 1
           : 0;
@@ -1886,7 +1888,11 @@ int vtkCreaseVotingFeatures::RequestData(
   if (this->ThinFeatures)
   {
     this->BeginStage("thin");
-    this->NumberOfFeaturePoints = run.Thin(type, outward.data(), ConnectionNeighbors, this->NormalNeighbors, m);
+    // The votes the hysteresis trusts (or the threshold, where that is lower): a point with fewer
+    // (one the detail rule marked) has too few voting lines for their median to locate the crease.
+    const double trusted = std::min(this->GrowThresholdUsed, this->ThresholdUsed);
+    this->NumberOfFeaturePoints = run.Thin(type, outward.data(), vote, trusted,
+      ConnectionNeighbors, this->NormalNeighbors, m);
     for (vtkIdType id : ids)
     {
       type[id] = m[id] ? type[id] : 0;

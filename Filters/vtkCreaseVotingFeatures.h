@@ -101,7 +101,10 @@
  *    median distance to the lines that vote for them (no single noisy fit places the line as
  *    well), is within half their local spacing, widened by the noise: sqrt((s/2)^2 + sigma^2),
  *    s = sqrt(pi r^2 / k) the spacing of a uniform sampling as dense as their NormalNeighbors
- *    nearest (r: the distance to the furthest of them). Across each border the outermost.
+ *    nearest (r: the distance to the furthest of them), and whose vote reaches the level the
+ *    hysteresis trusts (the median is a consensus only where enough lines vote; fewer mark the
+ *    points the detail rule added, rough patches of unevenly noisy clouds). Across each border
+ *    the outermost.
  *
  * Output arrays: `CreaseVotes` (float, the score, 0-1), `CreaseGain` (float, G_i), `CreaseAngle`
  * (float, the angle between the two fitted planes in degrees, 0 when no line was found),
