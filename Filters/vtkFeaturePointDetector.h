@@ -313,8 +313,9 @@ protected:
   enum HaloRules
   {
     HALO_FROM_OWNER = 0, ///< each halo copy takes its owner's value, bit for bit
-    HALO_MAXIMUM = 1,    ///< every copy, own or halo, takes the largest value of all copies
-    HALO_MINIMUM = 2,    ///< every copy takes the smallest value of all copies
+    HALO_MAXIMUM = 1,    ///< the owner takes the largest of all copies, a halo copy the larger
+                         ///< of its own and the owner's
+    HALO_MINIMUM = 2,    ///< the same with the smallest
   };
 
   ///@{
@@ -323,7 +324,8 @@ protected:
    * numbering the method works in) agree across the processes that hold the point: where a
    * method's value of a halo point is not exact, HALO_FROM_OWNER replaces it with the value its
    * owner computed; a flood or a labelling that spreads across pieces exchanges with
-   * HALO_MAXIMUM or HALO_MINIMUM, round after round, until no process changes. Every process
+   * HALO_MAXIMUM or HALO_MINIMUM, round after round, until no process changes (a value reaches
+   * every copy within two rounds). Every process
    * must call it (collective). Returns whether any value changed on any process; in one process
    * changes nothing and returns false. Needs the piece's global ids
    * (GetPieceGlobalIdsArrayName()); without them, an error and false.
