@@ -19,7 +19,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
+#include <numeric>
 #include <vector>
 
 vtkStandardNewMacro(vtkCreaseVotingFeatures);
@@ -822,6 +824,33 @@ struct CreaseRun
   // Per point: the median distance to the lines that vote for it (the consensus distance to the
   // crease, which no single noisy fit gives), -1 where none does. Set by CastVotes().
   std::vector<float> Offset;
+  // Distributed runs (see RequestData): by point id, 1 for the piece's own points (null: all);
+  // the upper median of per-row values over the own rows of every process; labels made to agree
+  // across the pieces (the smallest of each point's copies), true while any changes; how many
+  // own points of all processes carry each label.
+  const unsigned char* Own = nullptr;
+  std::function<double(std::vector<double>&)> RowMedian = [](std::vector<double>& values) {
+    return featurepoints::UpperMedian(values);
+  };
+  std::function<bool(long long*)> ShareMinimum;
+  std::function<void(const std::vector<long long>&, std::vector<long long>&)> CountLabels =
+    [](const std::vector<long long>& labels, std::vector<long long>& counts) {
+      std::vector<long long> sorted(labels);
+      std::sort(sorted.begin(), sorted.end());
+      counts.resize(labels.size());
+      for (size_t j = 0; j < labels.size(); ++j)
+      {
+        const auto range = std::equal_range(sorted.begin(), sorted.end(), labels[j]);
+        counts[j] = static_cast<long long>(range.second - range.first);
+      }
+    };
+  std::function<long long(vtkIdType)> GlobalId = [](vtkIdType id) {
+    return static_cast<long long>(id);
+  };
+  // Distributed runs: the halo's values of a per-point array (`bytes` bytes a point) replaced by
+  // their owners', so that a stage reads its neighbours' exact values, not their neighbours'.
+  std::function<void(void*, int)> FromOwners;
+  bool IsOwn(vtkIdType id) const { return !this->Own || this->Own[id] != 0; }
 
   CreaseRun(const featurepoints::PointReader& reader, const std::vector<vtkIdType>& ids,
     const NeighborTable& table, int k, int kfit, double d, vtkIdType n)
@@ -859,9 +888,13 @@ struct CreaseRun
   void ChooseScales(const float* normal, int smallest, unsigned char* detail);
   // The model of each fit (hinge or crossing planes) and its gain.
   void ChooseModels(float* gain, float* angle);
+  // Distributed runs: the halo's models (what the votes and the directions read) from their
+  // owners.
+  void ShareModels();
   // Step 4: the vote fraction of every point, and its Offset.
   void CastVotes(double minAngle, double bandWidth, float* vote);
-  // Step 6: hysteresis growth of the mask through points voting above growAt.
+  // Step 6: hysteresis growth of the mask through points voting above growAt, stepping from own
+  // points only (a distributed run repeats it after each exchange of the halo's mask).
   vtkIdType Grow(const float* vote, double growAt, unsigned char* mask) const;
   // Open borders: an empty sector of the tangent plane. Sets border[id] and its outward
   // direction (unit, in the tangent plane) in `outward`.
@@ -944,7 +977,7 @@ void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
     }
   });
   this->Variance =
-    std::max(featurepoints::UpperMedian(residual), NoiseFloor * NoiseFloor * this->D * this->D);
+    std::max(this->RowMedian(residual), NoiseFloor * NoiseFloor * this->D * this->D);
 }
 
 void CreaseRun::GatherSheet(
@@ -1066,6 +1099,10 @@ void CreaseRun::FitCreases(const float* normal)
       this->Fits[r] = FitGathered(s, this->Variance);
     }
   });
+  if (this->FromOwners)
+  {
+    this->FromOwners(flat.data(), 1);
+  }
   // The one-plane points with a point among their ViewNeighbors nearest on their sheet that one
   // plane does not explain: a feature in view, whose line their fit finds too (left out, Model
   // II's recall at 0.5 s of noise falls from 0.945 to 0.895: the 15-degree creases lose those
@@ -1199,6 +1236,32 @@ void CreaseRun::ChooseModels(float* gain, float* angle)
   }
 }
 
+void CreaseRun::ShareModels()
+{
+  struct Model
+  {
+    double Gain;
+    CreaseLine Hinge;
+    bool Explained;
+  };
+  std::vector<Model> models(static_cast<size_t>(this->N));
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    Model& model = models[this->Ids[r]];
+    model.Gain = this->Gain[r];
+    model.Hinge = this->Fits[r].Hinge;
+    model.Explained = this->Fits[r].Explained;
+  }
+  this->FromOwners(models.data(), static_cast<int>(sizeof(Model)));
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    const Model& model = models[this->Ids[r]];
+    this->Gain[r] = model.Gain;
+    this->Fits[r].Hinge = model.Hinge;
+    this->Fits[r].Explained = model.Explained;
+  }
+}
+
 double CreaseRun::LineDistance(vtkIdType r, const double v[3]) const
 {
   const CreaseLine& f = this->Fits[r].Hinge;
@@ -1280,7 +1343,7 @@ vtkIdType CreaseRun::Grow(const float* vote, double growAt, unsigned char* m) co
   std::vector<vtkIdType> stack;
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
-    if (m[this->Ids[r]])
+    if (m[this->Ids[r]] && this->IsOwn(this->Ids[r]))
     {
       stack.push_back(r);
     }
@@ -1299,7 +1362,10 @@ vtkIdType CreaseRun::Grow(const float* vote, double growAt, unsigned char* m) co
       {
         m[other] = 1;
         ++added;
-        stack.push_back(this->RowOf[other]);
+        if (this->IsOwn(other))
+        {
+          stack.push_back(this->RowOf[other]);
+        }
       }
     }
   }
@@ -1430,42 +1496,81 @@ void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
 void CreaseRun::DropShortBorders(int shortest, unsigned char* border) const
 {
   // Connected components of the border points, each point linked to the border points among its
-  // `shortest` nearest (either way round: a component is a set, whatever the visiting order).
-  std::vector<unsigned char> seen(static_cast<size_t>(this->N), 0);
-  std::vector<vtkIdType> component, stack;
+  // `shortest` nearest, either way round: a component is a set, whatever the visiting order and
+  // the split into pieces. A union-find over the links of the own points' rows (a halo point's
+  // row may miss points); each component's label, the smallest global id among its points,
+  // agrees across the pieces after the exchanges, and its size is counted over all processes.
+  if (this->FromOwners)
+  {
+    this->FromOwners(border, 1);
+  }
+  std::vector<int32_t> parent(static_cast<size_t>(this->N));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int32_t i) {
+    while (parent[i] != i)
+    {
+      parent[i] = parent[parent[i]];
+      i = parent[i];
+    }
+    return i;
+  };
   const int kc = std::min(shortest, this->K);
   std::vector<int32_t> buffer(static_cast<size_t>(this->K));
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
-    const vtkIdType start = this->Ids[r];
-    if (!border[start] || seen[start])
+    const vtkIdType id = this->Ids[r];
+    if (!border[id] || !this->IsOwn(id))
     {
       continue;
     }
-    component.clear();
-    stack.assign(1, start);
-    seen[start] = 1;
-    while (!stack.empty())
+    const int32_t* row = this->Row(r, buffer.data(), kc);
+    for (int j = 0; j < kc && row[j] >= 0; ++j)
     {
-      const vtkIdType id = stack.back();
-      stack.pop_back();
-      component.push_back(id);
-      const int32_t* row = this->Row(this->RowOf[id], buffer.data(), kc);
-      for (int j = 0; j < kc && row[j] >= 0; ++j)
+      if (border[row[j]])
       {
-        if (border[row[j]] && !seen[row[j]])
-        {
-          seen[row[j]] = 1;
-          stack.push_back(row[j]);
-        }
+        const int32_t a = find(static_cast<int32_t>(id)), b = find(row[j]);
+        parent[std::max(a, b)] = std::min(a, b);
       }
     }
-    if (static_cast<int>(component.size()) < shortest)
+  }
+  constexpr long long None = std::numeric_limits<long long>::max();
+  std::vector<long long> label(static_cast<size_t>(this->N), None), least;
+  for (vtkIdType id : this->Ids)
+  {
+    label[id] = border[id] ? this->GlobalId(id) : None;
+  }
+  do
+  {
+    least.assign(static_cast<size_t>(this->N), None);
+    for (vtkIdType id : this->Ids)
     {
-      for (vtkIdType id : component)
+      long long& root = least[find(static_cast<int32_t>(id))];
+      root = std::min(root, label[id]);
+    }
+    for (vtkIdType id : this->Ids)
+    {
+      if (border[id])
       {
-        border[id] = 0;
+        label[id] = least[find(static_cast<int32_t>(id))];
       }
+    }
+  } while (this->ShareMinimum && this->ShareMinimum(label.data()));
+  std::vector<vtkIdType> members;
+  std::vector<long long> labels, counts;
+  for (vtkIdType id : this->Ids)
+  {
+    if (border[id] && this->IsOwn(id))
+    {
+      members.push_back(id);
+      labels.push_back(label[id]);
+    }
+  }
+  this->CountLabels(labels, counts);
+  for (size_t j = 0; j < members.size(); ++j)
+  {
+    if (counts[j] < shortest)
+    {
+      border[members[j]] = 0;
     }
   }
 }
@@ -1621,6 +1726,12 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
       }
     }
   });
+  if (this->FromOwners)
+  {
+    this->FromOwners(directed.data(), 1);
+    this->FromOwners(direction.data(), 3 * sizeof(float));
+    this->FromOwners(anchor.data(), 3 * sizeof(float));
+  }
   // Corners: the directions of the feature points on the sheet within CornerReach() spread in
   // more than one direction (see CornerSpread).
   std::vector<unsigned char> corner(static_cast<size_t>(this->N), 0);
@@ -1819,12 +1930,40 @@ int vtkCreaseVotingFeatures::RequestData(
   }
   const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
   CreaseRun run(reader, ids, table, k, this->NumberOfNeighbors, this->MeanSpacing, n);
+  const bool distributed = this->IsDistributed() && !this->Owned.empty();
+  if (distributed)
+  {
+    // Every cloud-wide figure over the own points of all processes; the stages that spread
+    // across the cloud (hysteresis growth, border components) exchange the halo's values.
+    run.Own = this->Owned.data();
+    run.RowMedian = [&](std::vector<double>& values) {
+      std::vector<double> own;
+      for (size_t r = 0; r < values.size(); ++r)
+      {
+        if (this->IsOwned(ids[r]))
+        {
+          own.push_back(values[r]);
+        }
+      }
+      return this->GlobalUpperMedian(own);
+    };
+    run.ShareMinimum = [&](long long* labels) {
+      return this->ShareHaloValues(labels, 1, HALO_MINIMUM);
+    };
+    run.CountLabels = [&](const std::vector<long long>& labels, std::vector<long long>& counts) {
+      this->GlobalLabelCounts(labels, counts);
+    };
+    run.GlobalId = [&](vtkIdType id) { return this->GlobalId(id); };
+    run.FromOwners = [&](void* values, int bytes) {
+      this->ShareHaloValues(static_cast<unsigned char*>(values), bytes, HALO_FROM_OWNER);
+    };
+  }
   float* normal = normals->GetPointer(0);
   float* vote = votes->GetPointer(0);
   unsigned char* m = mask->GetPointer(0);
 
   this->BeginStage("normals");
-  run.ComputeNormals(this->NormalNeighbors, neighborhoods->GetCenter(), normal);
+  run.ComputeNormals(this->NormalNeighbors, this->CloudCenter(neighborhoods), normal);
   this->UpdateProgress(0.5);
 
   this->BeginStage("crease fits");
@@ -1836,22 +1975,37 @@ int vtkCreaseVotingFeatures::RequestData(
     run.ChooseScales(normal, std::min(SmallestScale, this->NumberOfNeighbors), detail.data());
   }
   run.ChooseModels(gains->GetPointer(0), angles->GetPointer(0));
+  if (distributed)
+  {
+    run.ShareModels();
+  }
   this->UpdateProgress(0.8);
 
   this->BeginStage("vote");
   run.CastVotes(this->MinimumAngle, this->BandWidth, vote);
+  // A halo point's vote counts fits beyond the piece: its owner's (exact) replaces it.
+  this->ShareHaloValues(vote, 1, HALO_FROM_OWNER);
   this->ApplyThreshold(vote, ids, nullptr, nullptr, m);
   // Hysteresis above the cloud's background: the median vote (most points are not on a crease;
   // on a strongly curved smooth shape every point collects some votes).
-  std::vector<double> values(ids.size());
-  for (size_t r = 0; r < ids.size(); ++r)
+  std::vector<double> values;
+  values.reserve(ids.size());
+  for (vtkIdType id : ids)
   {
-    values[r] = vote[ids[r]];
+    if (this->IsOwned(id))
+    {
+      values.push_back(vote[id]);
+    }
   }
-  this->GrowThresholdUsed = this->GrowThreshold + featurepoints::UpperMedian(values);
+  this->GrowThresholdUsed = this->GrowThreshold + this->GlobalUpperMedian(values);
   if (this->GrowThresholdUsed < this->ThresholdUsed)
   {
-    this->NumberOfFeaturePoints += run.Grow(vote, this->GrowThresholdUsed, m);
+    // Distributed: each process grows from its own points, then the pieces exchange the halo's
+    // mask (a point marked by any process is marked), until no process marks another point.
+    do
+    {
+      this->NumberOfFeaturePoints += run.Grow(vote, this->GrowThresholdUsed, m);
+    } while (this->ShareHaloValues(m, 1, HALO_MAXIMUM));
   }
 
   // Details finer than the smallest scale and corners, which no fit explains.
@@ -1863,6 +2017,7 @@ int vtkCreaseVotingFeatures::RequestData(
       ++this->NumberOfFeaturePoints;
     }
   }
+  this->ShareHaloValues(m, 1, HALO_FROM_OWNER);
 
   this->BeginStage("borders");
   std::vector<unsigned char> border(static_cast<size_t>(n), 0);
@@ -1870,9 +2025,12 @@ int vtkCreaseVotingFeatures::RequestData(
   if (this->Borders)
   {
     run.FindBorders(BorderNeighbors, border.data(), outward.data());
+    this->ShareHaloValues(border.data(), 1, HALO_FROM_OWNER);
+    this->ShareHaloValues(outward.data(), 3, HALO_FROM_OWNER);
     if (!this->ThinFeatures)
     {
       run.WidenBorders(BorderNeighbors, this->BandWidth, border.data());
+      this->ShareHaloValues(border.data(), 1, HALO_FROM_OWNER);
     }
     for (vtkIdType id : ids)
     {
@@ -1883,8 +2041,10 @@ int vtkCreaseVotingFeatures::RequestData(
       }
     }
   }
+  this->ShareHaloValues(m, 1, HALO_FROM_OWNER);
   unsigned char* type = types->GetPointer(0);
   run.ClassifyFeatures(m, border.data(), outward.data(), this->MinimumAngle, BorderNeighbors, type);
+  this->ShareHaloValues(type, 1, HALO_FROM_OWNER);
   if (this->ThinFeatures)
   {
     this->BeginStage("thin");
@@ -1897,6 +2057,16 @@ int vtkCreaseVotingFeatures::RequestData(
     {
       type[id] = m[id] ? type[id] : 0;
     }
+  }
+  if (distributed)
+  {
+    // The counts above include halo points: the own feature points of all processes.
+    vtkIdType own = 0;
+    for (vtkIdType id : ids)
+    {
+      own += this->IsOwned(id) ? m[id] : 0;
+    }
+    this->NumberOfFeaturePoints = this->GlobalSum(own);
   }
   this->UpdateProgress(1.0);
   return finish();

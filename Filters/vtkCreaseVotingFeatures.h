@@ -237,6 +237,22 @@ public:
   /** sigma of the last run, in the cloud's units (see the class comment). */
   vtkGetMacro(NoiseSigma, double);
 
+  /**
+   * Distributed runs: the k nearest (the widest of NumberOfNeighbors and NormalNeighbors) over 2
+   * generations: a point's fit reads its neighbours' normals and their one-sheet links. What a
+   * point reads of its neighbours' own results (whether one plane explains their sheets, their
+   * models for the vote, their directions for the corner test, votes, mask, borders, types) is
+   * taken from the processes that own them, and the stages that spread across the cloud
+   * (hysteresis growth, border components) exchange the halo's values until no process changes.
+   */
+  bool GetHaloExtent(int& neighbors, int& levels) const override
+  {
+    neighbors = this->NumberOfNeighbors > this->NormalNeighbors ? this->NumberOfNeighbors
+                                                                 : this->NormalNeighbors;
+    levels = 2;
+    return true;
+  }
+
   /** The score array: "CreaseVotes". ABSOLUTE thresholds are on the vote fraction (default 0.5). */
   const char* GetScoreArrayName() const override { return "CreaseVotes"; }
 

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 vtkCxxSetObjectMacro(vtkFeaturePointDetector, Locator, vtkAbstractPointLocator);
@@ -364,6 +365,11 @@ bool vtkFeaturePointDetector::PrepareNeighborhoods(
 void vtkFeaturePointDetector::PrepareOwnership(vtkPointCloudNeighborhoods* neighborhoods)
 {
   this->Owned.clear();
+  this->GlobalIds.clear();
+  this->HaloLayoutReady = false;
+  this->HaloEntries = 0;
+  this->HaloRequests.clear();
+  this->HaloAnswers.clear();
   if (!this->IsDistributed())
   {
     return;
@@ -382,6 +388,17 @@ void vtkFeaturePointDetector::PrepareOwnership(vtkPointCloudNeighborhoods* neigh
       const vtkIdType original = renumbered ? this->OriginalIds[i] : i;
       this->Owned[i] =
         (ghosts->GetValue(original) & vtkDataSetAttributes::DUPLICATEPOINT) ? 0 : 1;
+    }
+  }
+  vtkIdTypeArray* gids = input ? vtkIdTypeArray::SafeDownCast(
+    input->GetPointData()->GetArray(GetPieceGlobalIdsArrayName())) : nullptr;
+  if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
+  {
+    const bool renumbered = static_cast<vtkIdType>(this->OriginalIds.size()) == n;
+    this->GlobalIds.resize(static_cast<size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      this->GlobalIds[i] = gids->GetValue(renumbered ? this->OriginalIds[i] : i);
     }
   }
   // The bounds of the whole cloud: those of every process's own valid points.
@@ -410,6 +427,180 @@ void vtkFeaturePointDetector::PrepareOwnership(vtkPointCloudNeighborhoods* neigh
     this->GlobalBounds[2 * c] = globalLo[c];
     this->GlobalBounds[2 * c + 1] = globalHi[c];
     this->GlobalCenter[c] = 0.5 * (globalLo[c] + globalHi[c]);
+  }
+}
+
+bool vtkFeaturePointDetector::BuildHaloLayout()
+{
+  if (this->HaloLayoutReady)
+  {
+    return true;
+  }
+  const vtkIdType n = static_cast<vtkIdType>(this->Owned.size());
+  int ok = static_cast<vtkIdType>(this->GlobalIds.size()) == n ? 1 : 0;
+  int allOk = 0;
+  this->Controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
+  if (!allOk)
+  {
+    vtkErrorMacro(<< "A piece has no global ids (point array " << GetPieceGlobalIdsArrayName()
+                  << "): its halo cannot be matched with the other processes' points.");
+    return false;
+  }
+  // This process's halo points, by global id: its entries in the gathered list.
+  std::vector<std::pair<long long, vtkIdType>> halo, own;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    (this->Owned[i] ? own : halo).emplace_back(this->GlobalIds[i], i);
+  }
+  std::sort(halo.begin(), halo.end());
+  std::sort(own.begin(), own.end());
+  const int nProcs = this->Controller->GetNumberOfProcesses();
+  const int rank = this->Controller->GetLocalProcessId();
+  long long mine = static_cast<long long>(halo.size());
+  std::vector<long long> counts(nProcs, 0);
+  this->Controller->AllGather(&mine, counts.data(), 1);
+  std::vector<vtkIdType> lengths, offsets;
+  this->HaloEntries = GatherLayout(counts, lengths, offsets);
+  std::vector<vtkIdType> send(halo.size()), entries(static_cast<size_t>(this->HaloEntries));
+  for (size_t j = 0; j < halo.size(); ++j)
+  {
+    send[j] = static_cast<vtkIdType>(halo[j].first);
+    this->HaloRequests.emplace_back(offsets[rank] + static_cast<vtkIdType>(j), halo[j].second);
+  }
+  this->Controller->AllGatherV(send.data(), entries.data(),
+    static_cast<vtkIdType>(send.size()), lengths.data(), offsets.data());
+  // The entries of the other processes that name this process's own points.
+  for (int q = 0; q < nProcs; ++q)
+  {
+    if (q == rank)
+    {
+      continue;
+    }
+    for (vtkIdType e = offsets[q]; e < offsets[q] + lengths[q]; ++e)
+    {
+      const auto at = std::lower_bound(own.begin(), own.end(),
+        std::make_pair(static_cast<long long>(entries[e]), vtkIdType(-1)));
+      if (at != own.end() && at->first == static_cast<long long>(entries[e]))
+      {
+        this->HaloAnswers.emplace_back(e, at->second);
+      }
+    }
+  }
+  this->HaloLayoutReady = true;
+  return true;
+}
+
+template <typename T>
+bool vtkFeaturePointDetector::ShareHalo(T* values, int components, int rule)
+{
+  if (!this->IsDistributed() || this->Owned.empty())
+  {
+    return false;
+  }
+  if (!this->BuildHaloLayout())
+  {
+    return false;
+  }
+  const size_t width = static_cast<size_t>(components);
+  const size_t entries = static_cast<size_t>(this->HaloEntries) * width;
+  bool changed = false;
+  if (rule == HALO_FROM_OWNER)
+  {
+    // The owners' bytes, the other processes' zeros: a bitwise or gives the owner's value bit for
+    // bit, whatever it is.
+    const size_t bytes = sizeof(T) * width;
+    std::vector<unsigned char> local(entries * sizeof(T), 0), shared(entries * sizeof(T), 0);
+    for (const auto& answer : this->HaloAnswers)
+    {
+      std::memcpy(local.data() + answer.first * bytes, values + answer.second * width, bytes);
+    }
+    this->Controller->AllReduce(local.data(), shared.data(),
+      static_cast<vtkIdType>(local.size()), vtkCommunicator::BITWISE_OR_OP);
+    for (const auto& request : this->HaloRequests)
+    {
+      T* value = values + request.second * width;
+      const unsigned char* owner = shared.data() + request.first * bytes;
+      if (std::memcmp(value, owner, bytes) != 0)
+      {
+        std::memcpy(value, owner, bytes);
+        changed = true;
+      }
+    }
+  }
+  else
+  {
+    const bool maximum = rule == HALO_MAXIMUM;
+    const T identity = maximum ? std::numeric_limits<T>::lowest() : std::numeric_limits<T>::max();
+    auto pick = [maximum](T a, T b) { return maximum ? std::max(a, b) : std::min(a, b); };
+    std::vector<T> local(entries, identity), shared(entries, identity);
+    for (const auto& request : this->HaloRequests)
+    {
+      std::copy_n(values + request.second * width, width, local.data() + request.first * width);
+    }
+    for (const auto& answer : this->HaloAnswers)
+    {
+      std::copy_n(values + answer.second * width, width, local.data() + answer.first * width);
+    }
+    this->Controller->AllReduce(local.data(), shared.data(), static_cast<vtkIdType>(entries),
+      maximum ? vtkCommunicator::MAX_OP : vtkCommunicator::MIN_OP);
+    auto merge = [&](const std::pair<vtkIdType, vtkIdType>& link) {
+      for (size_t c = 0; c < width; ++c)
+      {
+        T& value = values[link.second * width + c];
+        const T merged = pick(value, shared[link.first * width + c]);
+        if (merged != value)
+        {
+          value = merged;
+          changed = true;
+        }
+      }
+    };
+    std::for_each(this->HaloRequests.begin(), this->HaloRequests.end(), merge);
+    std::for_each(this->HaloAnswers.begin(), this->HaloAnswers.end(), merge);
+  }
+  int mine = changed ? 1 : 0, any = 0;
+  this->Controller->AllReduce(&mine, &any, 1, vtkCommunicator::MAX_OP);
+  return any != 0;
+}
+
+bool vtkFeaturePointDetector::ShareHaloValues(unsigned char* values, int components, int rule)
+{
+  return this->ShareHalo(values, components, rule);
+}
+
+bool vtkFeaturePointDetector::ShareHaloValues(float* values, int components, int rule)
+{
+  return this->ShareHalo(values, components, rule);
+}
+
+bool vtkFeaturePointDetector::ShareHaloValues(long long* values, int components, int rule)
+{
+  return this->ShareHalo(values, components, rule);
+}
+
+void vtkFeaturePointDetector::GlobalLabelCounts(
+  const std::vector<long long>& labels, std::vector<long long>& counts) const
+{
+  std::vector<long long> all(labels);
+  if (this->IsDistributed())
+  {
+    const int nProcs = this->Controller->GetNumberOfProcesses();
+    long long mine = static_cast<long long>(labels.size());
+    std::vector<long long> sizes(nProcs, 0);
+    this->Controller->AllGather(&mine, sizes.data(), 1);
+    std::vector<vtkIdType> lengths, offsets;
+    const vtkIdType total = GatherLayout(sizes, lengths, offsets);
+    std::vector<vtkIdType> send(labels.begin(), labels.end()), received(total);
+    this->Controller->AllGatherV(send.data(), received.data(),
+      static_cast<vtkIdType>(send.size()), lengths.data(), offsets.data());
+    all.assign(received.begin(), received.end());
+  }
+  std::sort(all.begin(), all.end());
+  counts.resize(labels.size());
+  for (size_t j = 0; j < labels.size(); ++j)
+  {
+    const auto range = std::equal_range(all.begin(), all.end(), labels[j]);
+    counts[j] = static_cast<long long>(range.second - range.first);
   }
 }
 

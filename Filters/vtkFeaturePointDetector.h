@@ -44,6 +44,7 @@
 #include <cstdint>    // For int32_t
 #include <functional> // For the block consumer
 #include <string>     // For stage names
+#include <utility>    // For the halo layout
 #include <vector>     // For AutomaticThreshold
 
 class vtkAbstractPointLocator;
@@ -188,6 +189,13 @@ public:
    */
   vtkGetMacro(RequiredHaloWidth, double);
 
+  /**
+   * Distributed runs: the name of the point array (vtkIdTypeArray) that holds each piece point's
+   * global id, its index in the whole cloud. vtkDistributedFeaturePoints adds it to each piece;
+   * a method that makes halo values agree across processes (ShareHaloValues) reads it.
+   */
+  static const char* GetPieceGlobalIdsArrayName() { return "vtkPieceGlobalIds"; }
+
   /** Name of the point array the threshold applies to ("F", "SurfaceVariation", ...). */
   virtual const char* GetScoreArrayName() const = 0;
 
@@ -302,6 +310,46 @@ protected:
   double GlobalMeanWithoutOutliers(const std::vector<double>& values, double factor) const;
   ///@}
 
+  enum HaloRules
+  {
+    HALO_FROM_OWNER = 0, ///< each halo copy takes its owner's value, bit for bit
+    HALO_MAXIMUM = 1,    ///< the owner takes the largest of all copies, a halo copy the larger
+                         ///< of its own and the owner's
+    HALO_MINIMUM = 2,    ///< the same with the smallest
+  };
+
+  ///@{
+  /**
+   * Distributed runs: makes a per-point array (`components` values per point, by point id in the
+   * numbering the method works in) agree across the processes that hold the point: where a
+   * method's value of a halo point is not exact, HALO_FROM_OWNER replaces it with the value its
+   * owner computed; a flood or a labelling that spreads across pieces exchanges with
+   * HALO_MAXIMUM or HALO_MINIMUM, round after round, until no process changes (a value reaches
+   * every copy within two rounds). Every process
+   * must call it (collective). Returns whether any value changed on any process; in one process
+   * changes nothing and returns false. Needs the piece's global ids
+   * (GetPieceGlobalIdsArrayName()); without them, an error and false.
+   */
+  bool ShareHaloValues(unsigned char* values, int components, int rule);
+  bool ShareHaloValues(float* values, int components, int rule);
+  bool ShareHaloValues(long long* values, int components, int rule);
+  ///@}
+
+  /**
+   * Distributed runs: the global id of point i (the numbering the method works in); i in one
+   * process or when the piece carries no global ids.
+   */
+  long long GlobalId(vtkIdType i) const
+  {
+    return this->GlobalIds.empty() ? static_cast<long long>(i) : this->GlobalIds[i];
+  }
+
+  /**
+   * For each of `labels` (one per own point of this process), how many own points of all
+   * processes carry that label, in `counts` (collective; the labels are gathered everywhere).
+   */
+  void GlobalLabelCounts(const std::vector<long long>& labels, std::vector<long long>& counts) const;
+
   // Distributed runs: the own points (from the input's vtkGhostType) and the cloud's bounds, after
   // the renumbering of PrepareNeighborhoods.
   void PrepareOwnership(vtkPointCloudNeighborhoods* neighborhoods);
@@ -338,6 +386,18 @@ protected:
   // Distributed runs: 1 for the piece's own points, 0 for the halo, in the numbering the method
   // works in (empty: every point is own); the bounds of the whole cloud's valid points.
   std::vector<unsigned char> Owned;
+  // Distributed runs: the global id of each point (same numbering; empty without the array).
+  std::vector<long long> GlobalIds;
+  // ShareHaloValues' layout, built at its first call in a run: every process's halo points'
+  // global ids gathered in one list of entries; (entry, point) of this process's halo points and
+  // of the entries that name its own points.
+  bool HaloLayoutReady = false;
+  vtkIdType HaloEntries = 0;
+  std::vector<std::pair<vtkIdType, vtkIdType>> HaloRequests;
+  std::vector<std::pair<vtkIdType, vtkIdType>> HaloAnswers;
+  bool BuildHaloLayout();
+  template <typename T>
+  bool ShareHalo(T* values, int components, int rule);
   double GlobalBounds[6] = { 0, 0, 0, 0, 0, 0 };
   double GlobalCenter[3] = { 0, 0, 0 };
   std::vector<std::string> StageNames;

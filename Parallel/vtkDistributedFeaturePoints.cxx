@@ -931,6 +931,7 @@ int vtkDistributedFeaturePoints::RequestData(
   double width = 0.0;
   Rows piece;
   vtkNew<vtkUnsignedCharArray> ghosts;
+  vtkNew<vtkIdTypeArray> pieceGids;
   vtkSmartPointer<vtkPolyData> pieceData;
   vtkPolyData* result = nullptr;
   for (int attempt = 0;; ++attempt)
@@ -1119,6 +1120,8 @@ int vtkDistributedFeaturePoints::RequestData(
       piece.Allocate(layout, n);
       ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
       ghosts->SetNumberOfValues(n);
+      pieceGids->SetName(vtkFeaturePointDetector::GetPieceGlobalIdsArrayName());
+      pieceGids->SetNumberOfValues(n);
       std::vector<unsigned char> row(layout.RowBytes());
       for (vtkIdType j = 0; j < n; ++j)
       {
@@ -1127,11 +1130,13 @@ int vtkDistributedFeaturePoints::RequestData(
         (isHalo ? halo : own).Pack(isHalo ? i - own.Size() : i, row.data());
         piece.Unpack(j, row.data());
         ghosts->SetValue(j, isHalo ? vtkDataSetAttributes::DUPLICATEPOINT : 0);
+        pieceGids->SetValue(j, static_cast<vtkIdType>(order[j].first));
       }
     }
     halo = Rows();
     pieceData = piece.ToPolyData();
     pieceData->GetPointData()->AddArray(ghosts);
+    pieceData->GetPointData()->AddArray(pieceGids);
 
     // 6. The detector on the piece, its cloud-wide figures reduced over the processes.
     vtkMultiProcessController* saved = detector->GetController();
@@ -1174,6 +1179,7 @@ int vtkDistributedFeaturePoints::RequestData(
   resultNoGhosts->SetPoints(result->GetPoints());
   resultNoGhosts->GetPointData()->ShallowCopy(result->GetPointData());
   resultNoGhosts->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+  resultNoGhosts->GetPointData()->RemoveArray(vtkFeaturePointDetector::GetPieceGlobalIdsArrayName());
   const Layout outLayout = LayoutOf(resultNoGhosts);
   Rows resultRows;
   RowsOf(resultNoGhosts, outLayout, 0, resultRows, error);
@@ -1233,7 +1239,8 @@ void vtkDistributedFeaturePoints::FindReplacedArrays(vtkPolyData* input, vtkPoly
   {
     vtkAbstractArray* array = input->GetPointData()->GetAbstractArray(a);
     const char* name = array ? array->GetName() : nullptr;
-    if (!name || std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0)
+    if (!name || std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) == 0 ||
+      std::strcmp(name, vtkFeaturePointDetector::GetPieceGlobalIdsArrayName()) == 0)
     {
       continue;
     }

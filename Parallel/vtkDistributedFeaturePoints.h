@@ -24,8 +24,10 @@
  *    run finds the width short (GetRequiredHaloWidth()), the halo is built again that wide and
  *    the detector runs again.
  * 3. Runs the detector on its own points and the halo (ordered by global id, the halo flagged in
- *    `vtkGhostType`), with the Controller set: the detector takes every cloud-wide figure over all
- *    processes' own points.
+ *    `vtkGhostType`, each point's global id in `vtkPieceGlobalIds`), with the Controller set: the
+ *    detector takes every cloud-wide figure over all processes' own points, and exchanges the
+ *    halo's values with the points' owners where it needs them (the default detector's growth
+ *    and border components). The result's `vtkPieceGlobalIds` is dropped.
  * 4. Output: the process's own points (in global id order, with a `GlobalPointIds` array), or with
  *    GatherOutput the whole cloud on process 0 in the input's order (other processes: empty).
  *

@@ -55,6 +55,10 @@ foreach(_case "huang2023-off;${_cloud};--method;huang2023;--voxel-filter;off"
   if(NOT _summary MATCHES "ranks       ${RANKS}, the input read ${_read}")
     message(FATAL_ERROR "${_name}: no 'ranks ${RANKS}' line in the summary:\n${_summary}")
   endif()
+  # Every case is split between the ranks (the default detector too), none run on rank 0 alone.
+  if(_summary MATCHES "run on rank 0 alone")
+    message(FATAL_ERROR "${_name}: not distributed:\n${_summary}")
+  endif()
   file(SHA256 "${WORK}/${_name}-1.ply" _one)
   file(SHA256 "${WORK}/${_name}-${RANKS}.ply" _many)
   if(NOT _one STREQUAL _many)

@@ -122,6 +122,25 @@ vtkSmartPointer<vtkPolyData> Piece(vtkPolyData* cloud, int rank, int nProcs)
   return piece;
 }
 
+// The default detector, declared not distributable: the driver runs it on process 0 alone (the
+// fallback of a detector whose GetHaloExtent() says no).
+class OneProcessCrease : public vtkCreaseVotingFeatures
+{
+public:
+  static OneProcessCrease* New()
+  {
+    OneProcessCrease* filter = new OneProcessCrease;
+    filter->InitializeObjectBase();
+    return filter;
+  }
+  vtkTypeMacro(OneProcessCrease, vtkCreaseVotingFeatures);
+  bool GetHaloExtent(int& neighbors, int& levels) const override
+  {
+    neighbors = levels = 0;
+    return false;
+  }
+};
+
 // Every point array of `b` equals `a`'s, bit for bit; the field data's figures too.
 bool Same(vtkPolyData* a, vtkPolyData* b, const std::string& label)
 {
@@ -341,10 +360,30 @@ int main(int argc, char* argv[])
       [&] { return huang(true); }, true, true },
     { "huang2023 (defaults), plate 90000", large, [&] { return huang(true); }, true, true },
     { "crease (defaults), bracket", bracket,
-      [&] { return make(vtkCreaseVotingFeatures::New()); }, false, false },
+      [&] { return make(vtkCreaseVotingFeatures::New()); }, true, false },
+    { "crease (defaults), duplicates", duplicates,
+      [&] { return make(vtkCreaseVotingFeatures::New()); }, true, false },
+    { "crease (40 neighbours, thin), duplicates", duplicates,
+      [&] {
+        auto f = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
+        f->SetNumberOfNeighbors(40);
+        f->ThinFeaturesOn();
+        return vtkSmartPointer<vtkFeaturePointDetector>(f);
+      },
+      true, false },
+    { "crease (defaults), plate 90000", large,
+      [&] { return make(vtkCreaseVotingFeatures::New()); }, true, false },
+    { "crease declared not distributable, bracket", bracket,
+      [&] { return make(OneProcessCrease::New()); }, false, false },
   };
+  // FEATUREPOINTS_TEST_CASES: run only the cases whose name holds this text.
+  const char* only = std::getenv("FEATUREPOINTS_TEST_CASES");
   for (const Case& c : cases)
   {
+    if (only && !std::strstr(c.Name, only))
+    {
+      continue;
+    }
     // One process on the whole cloud (process 0 only).
     vtkSmartPointer<vtkPolyData> reference;
     if (rank == 0)
