@@ -2140,6 +2140,9 @@ int vtkFeatureCurveExtraction::RequestData(
   run.RemoveSpurs();
   run.RemoveUnsupported();
   run.RemoveSpurs();
+  // The spurs' removal frees ends that were junctions: join those too.
+  run.JoinEnds();
+  run.RemoveSpurs();
   run.BridgeAlongCreases();
   run.SplitAtCorners();
   std::vector<std::array<int, 2>> through;

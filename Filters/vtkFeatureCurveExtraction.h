@@ -29,7 +29,8 @@
  *    points run out); an end pointing at another curve within JoinDistance joins it.
  *    Curves shorter than JoinDistance between two junctions (a corner traced round as well as
  *    along its edges) collapse into one corner.
- *    After cleaning (stage 3), gaps along a crease are bridged from any distance: two free ends
+ *    After cleaning (stage 3), the ends it freed are joined again in the same way, and gaps along
+ *    a crease are bridged from any distance: two free ends
  *    that point at each other (within 15 degrees, over 2 FitRadius s) are joined when all the
  *    cloud's points bend across the gap's line: over the whole gap, the two faces hinged on it
  *    differ in slope by a crease's angle (10 degrees) and by more than 3 standard errors (from
