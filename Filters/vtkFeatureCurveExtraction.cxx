@@ -48,7 +48,8 @@ constexpr double AssignRadius = 3.0;    // s: feature points this close to a cur
 const double CornerTurn = std::cos(vtkMath::RadiansFromDegrees(45.0)); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
 const double BridgeCone = std::cos(vtkMath::RadiansFromDegrees(30.0)); // an end joins what lies in this cone
-const double FacingCone = std::cos(vtkMath::RadiansFromDegrees(15.0)); // ends facing each other within this
+// Ends facing each other within this are bridged along a crease from any distance.
+const double FacingCone = std::cos(vtkMath::RadiansFromDegrees(15.0));
 constexpr int SmoothingPasses = 20;
 constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's points
 constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
@@ -1095,9 +1096,10 @@ void CurveRun::JoinEnds()
     {
       const V3 ab = this->G.Vertices[ends[b]] - this->G.Vertices[ends[a]];
       const double distance = ab.norm();
-      // Two ends that face each other along one line are bridged from twice as far.
-      const bool facing = ab.dot(lineDirections[a]) >= FacingCone * distance &&
-        -ab.dot(lineDirections[b]) >= FacingCone * distance;
+      // Two ends that face each other along one line (within BridgeCone, the hooks aside) are
+      // bridged from twice as far.
+      const bool facing = ab.dot(lineDirections[a]) >= BridgeCone * distance &&
+        -ab.dot(lineDirections[b]) >= BridgeCone * distance;
       if (distance > (facing ? 2.0 : 1.0) * this->J ||
         (!facing && (ab.dot(directions[a]) < 0.0 || -ab.dot(directions[b]) < 0.0)))
       {

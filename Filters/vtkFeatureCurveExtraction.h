@@ -23,7 +23,7 @@
  *    point along (a corner, where three or more curves meet, or two borders at an angle), nearest
  *    pairs first and only where all the ends of a junction lie within JoinDistance of each other
  *    (a row of ends along two close creases is not one junction); two ends that point at each
- *    other are bridged (from up to twice that distance when they face each other within 15
+ *    other are bridged (from up to twice that distance when they face each other within 30
  *    degrees, each end's direction taken over 2 FitRadius s back along its curve, the last
  *    quarter of that aside: a trace's last vertices hook towards the side of the band where its
  *    points run out); an end pointing at another curve within JoinDistance joins it.
