@@ -26,9 +26,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <map>
-#include <numeric>
 #include <set>
 #include <unordered_map>
 #include <utility>
@@ -50,7 +48,8 @@ constexpr double AssignRadius = 3.0;    // s: feature points this close to a cur
 const double CornerTurn = std::cos(vtkMath::RadiansFromDegrees(45.0)); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
 const double BridgeCone = std::cos(vtkMath::RadiansFromDegrees(30.0)); // an end joins what lies in this cone
-const double FacingCone = std::cos(vtkMath::RadiansFromDegrees(15.0)); // ends facing each other within this
+// Ends facing each other within this are bridged along a crease from any distance.
+const double FacingCone = std::cos(vtkMath::RadiansFromDegrees(15.0));
 constexpr int SmoothingPasses = 20;
 constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's points
 constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
@@ -342,7 +341,8 @@ private:
   void Walk(int start, V3 x, V3 d, int trace, int sign);
   void Cover(const V3& x);
   int NearbyEnd(int v, int steps) const;
-  V3 EndDirection(int end) const;
+  // The direction a free end points in, from `reach` back along its curve.
+  V3 EndDirection(int end, double reach, bool skipHook) const;
   std::vector<int> Components() const;
   V3 FitSection(const V3& x, const V3& t) const;
   // The slab of all points about x across the curve's tangent t, and the frame across it.
@@ -997,19 +997,29 @@ void CurveRun::BridgeAlongCreases()
   }
 }
 
-V3 CurveRun::EndDirection(int end) const
+V3 CurveRun::EndDirection(int end, double reach, bool skipHook) const
 {
-  // Back along the curve about CornerWindow, then the direction to the end.
+  // Back along the curve `reach` (not past a junction or a corner), then the direction towards
+  // the end; with skipHook, the last quarter of that stretch aside: a trace's last vertices hook
+  // towards the side of the band where its points run out.
+  std::vector<int> path{ end };
   int previous = end, current = this->G.Adjacent[end][0];
-  const int steps = std::max(1, static_cast<int>(std::lround(CornerWindow * this->S / this->H)));
+  path.push_back(current);
+  const int steps = std::max(1, static_cast<int>(std::lround(reach / this->H)));
   for (int k = 1; k < steps && this->G.Degree(current) == 2 && !this->G.Node[current]; ++k)
   {
     const auto& a = this->G.Adjacent[current];
     const int following = a[0] == previous ? a[1] : a[0];
+    if (following == end)
+    {
+      break;
+    }
     previous = current;
     current = following;
+    path.push_back(current);
   }
-  const V3 d = this->G.Vertices[end] - this->G.Vertices[current];
+  const int k = static_cast<int>(path.size()) - 1;
+  const V3 d = this->G.Vertices[path[skipHook ? k / 4 : 0]] - this->G.Vertices[path[k]];
   return d.norm() > 0.0 ? V3(d.normalized()) : V3(V3::Zero());
 }
 
@@ -1047,17 +1057,21 @@ std::vector<int> CurveRun::Components() const
 void CurveRun::JoinEnds()
 {
   const int n = static_cast<int>(this->G.Vertices.size());
+  // Each free end's direction just behind it (where a corner's edges meet), and along its curve
+  // over 2 FitRadius, the hook at the end aside (whether two ends continue one line).
   std::vector<int> ends;
-  std::vector<V3> directions;
+  std::vector<V3> directions, lineDirections;
   for (int v = 0; v < n; ++v)
   {
     if (this->G.Degree(v) == 1)
     {
-      const V3 d = this->EndDirection(v);
-      if (d.squaredNorm() > 0.0)
+      const V3 d = this->EndDirection(v, CornerWindow * this->S, false);
+      const V3 line = this->EndDirection(v, 2.0 * this->R, true);
+      if (d.squaredNorm() > 0.0 && line.squaredNorm() > 0.0)
       {
         ends.push_back(v);
         directions.push_back(d);
+        lineDirections.push_back(line);
       }
     }
   }
@@ -1067,25 +1081,27 @@ void CurveRun::JoinEnds()
   {
     componentSize[component[v]] += this->G.Degree(v) > 0;
   }
-  // Pairs of ends near each other, facing each other's side: clusters (union-find).
+  // Pairs of ends near each other, facing each other's side, nearest first.
   const size_t m = ends.size();
-  std::vector<size_t> parent(m);
-  std::iota(parent.begin(), parent.end(), 0);
-  std::function<size_t(size_t)> root = [&](size_t a) {
-    return parent[a] == a ? a : parent[a] = root(parent[a]);
+  struct Pair
+  {
+    double Distance;
+    size_t A, B;
+    bool Facing;
   };
-  std::vector<unsigned char> paired(m, 0);
+  std::vector<Pair> pairs;
   for (size_t a = 0; a < m; ++a)
   {
     for (size_t b = a + 1; b < m; ++b)
     {
       const V3 ab = this->G.Vertices[ends[b]] - this->G.Vertices[ends[a]];
       const double distance = ab.norm();
-      // Two ends that face each other along one line are bridged from twice as far.
-      const bool facing = ab.dot(directions[a]) >= FacingCone * distance &&
-        -ab.dot(directions[b]) >= FacingCone * distance;
-      if (distance > (facing ? 2.0 : 1.0) * this->J || ab.dot(directions[a]) < 0.0 ||
-        -ab.dot(directions[b]) < 0.0)
+      // Two ends that face each other along one line (within BridgeCone, the hooks aside) are
+      // bridged from twice as far.
+      const bool facing = ab.dot(lineDirections[a]) >= BridgeCone * distance &&
+        -ab.dot(lineDirections[b]) >= BridgeCone * distance;
+      if (distance > (facing ? 2.0 : 1.0) * this->J ||
+        (!facing && (ab.dot(directions[a]) < 0.0 || -ab.dot(directions[b]) < 0.0)))
       {
         continue;
       }
@@ -1095,28 +1111,83 @@ void CurveRun::JoinEnds()
       {
         continue;
       }
-      parent[root(a)] = root(b);
-      paired[a] = paired[b] = 1;
+      pairs.push_back({ distance, a, b, facing });
     }
   }
-  std::map<size_t, std::vector<size_t>> clusters;
-  for (size_t a = 0; a < m; ++a)
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) {
+    return x.Distance < y.Distance ||
+      (x.Distance == y.Distance && (x.A < y.A || (x.A == y.A && x.B < y.B)));
+  });
+  // Clusters by complete linkage: two clusters meet only when all their ends lie within
+  // JoinDistance of each other (a bridge between two facing ends aside), so that a chain of
+  // near pairs along a row of ends does not make one junction of them all.
+  std::vector<int> cluster(m, -1);
+  std::vector<std::vector<size_t>> clusters;
+  for (const Pair& pair : pairs)
   {
-    if (paired[a])
+    const int ca = cluster[pair.A], cb = cluster[pair.B];
+    if (ca >= 0 && ca == cb)
     {
-      clusters[root(a)].push_back(a);
+      continue;
+    }
+    const std::vector<size_t> one{ pair.A }, other{ pair.B };
+    const std::vector<size_t>& first = ca >= 0 ? clusters[ca] : one;
+    const std::vector<size_t>& second = cb >= 0 ? clusters[cb] : other;
+    bool compact = true;
+    for (size_t x : first)
+    {
+      for (size_t y : second)
+      {
+        compact = compact &&
+          (this->G.Vertices[ends[x]] - this->G.Vertices[ends[y]]).norm() <= this->J;
+      }
+    }
+    const bool bridge = pair.Facing && ca < 0 && cb < 0;
+    if (!compact && !bridge)
+    {
+      continue;
+    }
+    if (ca < 0 && cb < 0)
+    {
+      cluster[pair.A] = cluster[pair.B] = static_cast<int>(clusters.size());
+      clusters.push_back({ pair.A, pair.B });
+    }
+    else if (ca < 0 || cb < 0)
+    {
+      const int c = ca >= 0 ? ca : cb;
+      const size_t added = ca >= 0 ? pair.B : pair.A;
+      cluster[added] = c;
+      clusters[c].push_back(added);
+    }
+    else
+    {
+      for (size_t x : clusters[cb])
+      {
+        cluster[x] = ca;
+        clusters[ca].push_back(x);
+      }
+      clusters[cb].clear();
     }
   }
-  for (const auto& entry : clusters)
+  std::vector<unsigned char> paired(m, 0);
+  for (const std::vector<size_t>& members : clusters)
   {
-    const std::vector<size_t>& members = entry.second;
+    if (members.empty())
+    {
+      continue;
+    }
+    for (size_t a : members)
+    {
+      paired[a] = 1;
+    }
     std::vector<V3> points, lines;
     for (size_t a : members)
     {
       points.push_back(this->G.Vertices[ends[a]]);
       lines.push_back(directions[a]);
     }
-    if (members.size() == 2 && lines[0].dot(lines[1]) < -BridgeCone)
+    if (members.size() == 2 &&
+      lineDirections[members[0]].dot(lineDirections[members[1]]) < -BridgeCone)
     {
       this->G.Link(ends[members[0]], ends[members[1]]); // a gap along one curve
       continue;
@@ -2070,6 +2141,9 @@ int vtkFeatureCurveExtraction::RequestData(
   run.CollapseShortLinks();
   run.RemoveSpurs();
   run.RemoveUnsupported();
+  run.RemoveSpurs();
+  // The spurs' removal frees ends that were junctions: join those too.
+  run.JoinEnds();
   run.RemoveSpurs();
   run.BridgeAlongCreases();
   run.SplitAtCorners();

@@ -20,12 +20,17 @@
  *    comes within 1.5 s of a vertex of another trace (it joins it there: a junction, or the
  *    continuation of the same curve).
  * 2. Joining. Ends within JoinDistance s of each other meet at the point nearest to the lines they
- *    point along (a corner, where three or more curves meet, or two borders at an angle); two ends
- *    that point at each other are bridged (from up to twice that distance when they face each
- *    other within 15 degrees); an end pointing at another curve within JoinDistance joins it.
+ *    point along (a corner, where three or more curves meet, or two borders at an angle), nearest
+ *    pairs first and only where all the ends of a junction lie within JoinDistance of each other
+ *    (a row of ends along two close creases is not one junction); two ends that point at each
+ *    other are bridged (from up to twice that distance when they face each other within 30
+ *    degrees, each end's direction taken over 2 FitRadius s back along its curve, the last
+ *    quarter of that aside: a trace's last vertices hook towards the side of the band where its
+ *    points run out); an end pointing at another curve within JoinDistance joins it.
  *    Curves shorter than JoinDistance between two junctions (a corner traced round as well as
  *    along its edges) collapse into one corner.
- *    After cleaning (stage 3), gaps along a crease are bridged from any distance: two free ends
+ *    After cleaning (stage 3), the ends it freed are joined again in the same way, and gaps along
+ *    a crease are bridged from any distance: two free ends
  *    that point at each other (within 15 degrees, over 2 FitRadius s) are joined when all the
  *    cloud's points bend across the gap's line: over the whole gap, the two faces hinged on it
  *    differ in slope by a crease's angle (10 degrees) and by more than 3 standard errors (from
