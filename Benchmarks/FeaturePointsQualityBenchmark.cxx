@@ -3,8 +3,8 @@
 // (vtkFeaturePointExtraction, "Huang2023"), each at its own defaults, no per-cloud tuning:
 // - CAD-like parts (vtkFeatureModelSource: Models I-III, Box, Cylinder, Bracket) with features
 //   sampled 3x denser and uniformly, sigma = 0.5 s: precision, recall, F1 (docs/evaluation.md).
-// - Smooth shapes (Sphere, Blob) at sigma = 0, 0.25 s, 0.5 s: false detections per 1000 points,
-//   at the scaled point counts and at 7,000 points.
+// - Smooth shapes (Sphere, Blob, Torus, Ellipsoid) at sigma = 0, 0.25 s, 0.5 s: false detections
+//   per 1000 points, at the scaled point counts and at 7,000 points.
 // - PCEDNet's labelled clouds (coordinates only): MCC per cloud, median per folder and overall.
 // - Invariance: Model I (denser and uniform) scaled by 1000, moved by 10^6 and shuffled: share of
 //   points whose mask changes.
@@ -309,7 +309,8 @@ int main(int argc, char* argv[])
     // row is checked against the target.
     for (const bool small : { false, true })
     {
-      for (int model : { vtkFeatureModelSource::SPHERE, vtkFeatureModelSource::BLOB })
+      for (int model : { vtkFeatureModelSource::SPHERE, vtkFeatureModelSource::BLOB,
+             vtkFeatureModelSource::TORUS, vtkFeatureModelSource::ELLIPSOID })
       {
         for (double noise : { 0.0, 0.25, 0.5 })
         {

@@ -151,6 +151,37 @@ double BlobArea(double R)
   return sum * dPhi * dTheta;
 }
 
+// The ellipsoid with semi-axes e = (a, b, c) is the image of the unit sphere under
+// u -> (a ux, b uy, c uz); its area density over the sphere of directions is
+// dA/dOmega = a b c |(ux / a, uy / b, uz / c)|, at most a b c / min(a, b, c).
+double EllipsoidAreaDensity(const Vec& u, const Vec& e)
+{
+  const Vec g{ u.X / e.X, u.Y / e.Y, u.Z / e.Z };
+  return e.X * e.Y * e.Z * Norm(g);
+}
+
+// The ellipsoid's area: the integral of its area density over the sphere of directions (midpoint
+// rule in phi and theta, as BlobArea; the area only sets the nominal spacing).
+double EllipsoidArea(const Vec& e)
+{
+  const int nPhi = 256, nTheta = 512;
+  const double dPhi = Pi / nPhi, dTheta = 2.0 * Pi / nTheta;
+  double sum = 0.0;
+  for (int i = 0; i < nPhi; ++i)
+  {
+    const double phi = (i + 0.5) * dPhi;
+    double ring = 0.0;
+    for (int j = 0; j < nTheta; ++j)
+    {
+      const double theta = (j + 0.5) * dTheta;
+      const Vec u{ std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi) };
+      ring += EllipsoidAreaDensity(u, e);
+    }
+    sum += ring * std::sin(phi);
+  }
+  return sum * dPhi * dTheta;
+}
+
 // A surface piece that can be sampled uniformly by area.
 struct Patch
 {
@@ -165,9 +196,12 @@ struct Patch
     Blob,          // centre Origin, radius R (1 + BlobAmplitude BlobShape(u)) in direction u
     Perforated,    // the Parallelogram less the disk of radius R around its centre (U, V
                    // orthogonal, the disk inside)
+    Torus,         // around the z axis through Origin: major radius R, tube radius TubeR
+    Ellipsoid,     // centre Origin, semi-axes U.X, U.Y, U.Z along x, y, z
   } Type;
   Vec Origin, U, V;
   double R = 0, Z0 = 0, Z1 = 0;
+  double TubeR = 0; // the Torus's
   double Angle = 2.0 * Pi; // the Cylinder's range of azimuths
 
   double Area() const
@@ -186,6 +220,10 @@ struct Patch
         return BlobArea(this->R);
       case Perforated:
         return Norm(Cross(this->U, this->V)) - Pi * this->R * this->R;
+      case Torus:
+        return 4.0 * Pi * Pi * this->R * this->TubeR;
+      case Ellipsoid:
+        return EllipsoidArea(this->U);
       default:
         return 4.0 * Pi * this->R * this->R;
     }
@@ -237,6 +275,37 @@ struct Patch
           if (Norm(p - centre) >= this->R)
           {
             return p;
+          }
+        }
+      }
+      case Torus:
+      {
+        // At the azimuth t around z and the angle v around the tube (v = 0 outermost), the area
+        // element is R r (1 + (r / R) cos v) dt dv: t uniform, v kept with probability
+        // (1 + (r / R) cos v) / (1 + r / R).
+        const double ratio = this->TubeR / this->R;
+        const double t = 2.0 * Pi * rng.Uniform();
+        double v = 0.0;
+        do
+        {
+          v = 2.0 * Pi * rng.Uniform();
+        } while (rng.Uniform() * (1.0 + ratio) > 1.0 + ratio * std::cos(v));
+        const double rho = this->R + this->TubeR * std::cos(v);
+        return this->Origin +
+          Vec{ rho * std::cos(t), rho * std::sin(t), this->TubeR * std::sin(v) };
+      }
+      case Ellipsoid:
+      {
+        // A uniform direction u, kept with probability dA/dOmega(u) over its maximum: the kept
+        // images are uniform over the ellipsoid's area.
+        const Vec& e = this->U;
+        const double bound = e.X * e.Y * e.Z / std::min(e.X, std::min(e.Y, e.Z));
+        for (;;)
+        {
+          const Vec u = UniformDirection(rng);
+          if (rng.Uniform() * bound <= EllipsoidAreaDensity(u, e))
+          {
+            return this->Origin + Vec{ e.X * u.X, e.Y * u.Y, e.Z * u.Z };
           }
         }
       }
@@ -606,6 +675,22 @@ Geometry MakeGeometry(int model, double size, double valleySlope, double separat
       }
       return g;
     }
+    case vtkFeatureModelSource::TORUS:
+    {
+      Geometry g;
+      Patch torus{ Patch::Torus, Vec{}, Vec{}, Vec{} };
+      torus.R = 0.35 * size;
+      torus.TubeR = 0.1 * size;
+      g.Patches.push_back(torus);
+      return g;
+    }
+    case vtkFeatureModelSource::ELLIPSOID:
+    {
+      Geometry g;
+      g.Patches.push_back(
+        { Patch::Ellipsoid, Vec{}, Vec{ 0.5 * size, 0.3 * size, 0.15 * size }, Vec{} });
+      return g;
+    }
     case vtkFeatureModelSource::BLOB:
     {
       Geometry g;
@@ -719,6 +804,10 @@ const char* vtkFeatureModelSource::GetModelName(int model)
       return "Half cylinder";
     case PLATE_WITH_HOLE:
       return "Plate with hole";
+    case TORUS:
+      return "Torus";
+    case ELLIPSOID:
+      return "Ellipsoid";
     default:
       return "unknown";
   }
@@ -745,6 +834,8 @@ vtkIdType vtkFeatureModelSource::GetDefaultNumberOfPoints(int model)
     case THIN_PLATE:
     case HALF_CYLINDER:
     case PLATE_WITH_HOLE:
+    case TORUS:
+    case ELLIPSOID:
       return 100000;
     default:
       return 100000;

@@ -60,13 +60,25 @@
  *   with a circular hole of radius 0.2 Size in its middle. Its borders are the features: the
  *   outer square and the hole's circle; the square's sides meet at 90 degrees at four corners.
  *
+ * Two more smooth shapes without any feature have the thin and flattened parts of real parts,
+ * where a surface curves tightly in one direction only:
+ *
+ * - TORUS (100,000 points): a ring around the z axis, major radius 0.35 Size, tube radius
+ *   0.1 Size. Principal curvature radii: 0.1 Size around the tube; along the ring, 0.45 Size at
+ *   the outer equator, -0.25 Size (saddle) at the inner one, unbounded on the top and bottom
+ *   circles.
+ * - ELLIPSOID (100,000 points): semi-axes 0.5, 0.3 and 0.15 Size along x, y and z. Principal
+ *   curvature radii from 0.045 Size (c^2 / a, at the ends of the long axis, across the flat
+ *   side) to 1.67 Size (a^2 / c, at the centres of the flat faces).
+ *
  * Models I-III and PARALLEL_CREASES stand for pieces of larger surfaces: their sheets' outer
  * edges are not features (the creases run to them, and no corner lies there). The borders of
  * HALF_CYLINDER and PLATE_WITH_HOLE are the edges of open parts, and are features.
  *
  * Sampling: points are drawn independently and uniformly over the surface area (a Poisson
- * sampling, like an unorganized scan; on the blob, uniform directions kept in proportion to the
- * exact area density), except that the band within DenseBandWidth nominal spacings of a feature
+ * sampling, like an unorganized scan; on the blob and the ellipsoid, uniform directions kept in
+ * proportion to the exact area density; on the torus, the angle around the tube kept in proportion
+ * to 1 + (0.1 / 0.35) cos v), except that the band within DenseBandWidth nominal spacings of a feature
  * curve is sampled FeatureDensityFactor times as densely, as the paper's re-scanned feature
  * regions (1: uniform sampling). The nominal spacing is sqrt(area / number of points);
  * PARALLEL_CREASES and THIN_PLATE, whose area depends on it through FeatureSeparation, are built
@@ -79,7 +91,7 @@
  * Output: a vtkPolyData with one vertex cell per point and the point arrays
  * - `FeatureDistance` (double): the clean (pre-noise) distance delta from the point to the
  *   nearest feature curve (exact, the circles' and the borders' included); VTK_FLOAT_MAX on a
- *   model without features (SPHERE, BLOB).
+ *   model without features (SPHERE, BLOB, TORUS, ELLIPSOID).
  * - `GroundTruth` (uint8): 1 for the positives of docs/evaluation.md, delta <= 2 s.
  * - `GroundTruthType` (uint8, FeatureTypes): NOT_FEATURE (0) where GroundTruth is 0; else CORNER (3)
  *   within 2 s of a corner (the clean position), else the type of the nearest feature curve:
@@ -124,6 +136,8 @@ public:
     THIN_PLATE = 9,       ///< closed plate FeatureSeparation thick: 12 convex edges, 8 corners
     HALF_CYLINDER = 10,   ///< open half cylinder: its borders (2 lines, 2 half circles)
     PLATE_WITH_HOLE = 11, ///< open square sheet with a round hole: its borders
+    TORUS = 12,           ///< smooth closed ring, tube radius 0.1 Size, no feature
+    ELLIPSOID = 13,       ///< smooth flattened closed surface, no feature
   };
 
   /** The values of the FeatureType array. */
@@ -138,7 +152,7 @@ public:
 
   ///@{
   /** Which model. Default MODEL_I. */
-  vtkSetClampMacro(Model, int, MODEL_I, PLATE_WITH_HOLE);
+  vtkSetClampMacro(Model, int, MODEL_I, ELLIPSOID);
   vtkGetMacro(Model, int);
   void SetModelToModelI() { this->SetModel(MODEL_I); }
   void SetModelToModelII() { this->SetModel(MODEL_II); }
@@ -152,6 +166,8 @@ public:
   void SetModelToThinPlate() { this->SetModel(THIN_PLATE); }
   void SetModelToHalfCylinder() { this->SetModel(HALF_CYLINDER); }
   void SetModelToPlateWithHole() { this->SetModel(PLATE_WITH_HOLE); }
+  void SetModelToTorus() { this->SetModel(TORUS); }
+  void SetModelToEllipsoid() { this->SetModel(ELLIPSOID); }
   ///@}
 
   /** The model's name ("Model I", ..., "Box", ...), and its default number of points. */
@@ -161,9 +177,9 @@ public:
   ///@{
   /**
    * Number of points; 0 (default) takes the model's own count (170,000, 220,000, 130,000 for
-   * Models I-III as in the paper's Table 1; 100,000 for the sphere, the box, the blob and the
-   * four models of close and bordered features; 80,000 for the cylinder; 120,000 for the
-   * bracket).
+   * Models I-III as in the paper's Table 1; 100,000 for the sphere, the box, the blob, the
+   * four models of close and bordered features, the torus and the ellipsoid; 80,000 for the
+   * cylinder; 120,000 for the bracket).
    */
   vtkSetClampMacro(NumberOfPoints, vtkIdType, 0, VTK_INT_MAX);
   vtkGetMacro(NumberOfPoints, vtkIdType);
@@ -193,7 +209,7 @@ public:
   ///@{
   /**
    * Size of the model (sheet side, sphere and blob diameter, the box's, the bracket's, the thin
-   * plate's and the half cylinder's length) in the output's units. Default 100.
+   * plate's, the half cylinder's and the ellipsoid's length) in the output's units. Default 100.
    */
   vtkSetClampMacro(Size, double, 1e-12, 1e12);
   vtkGetMacro(Size, double);

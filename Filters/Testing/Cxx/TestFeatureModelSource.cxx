@@ -426,6 +426,8 @@ int TestFeatureModelSource(int, char*[])
       M_PI * 0.3, 1.0 },
     { vtkFeatureModelSource::PLATE_WITH_HOLE, "Plate with hole", 100000,
       0.5 * (4.0 + 2.0 * M_PI * 0.2), 1.0 - M_PI * 0.04, 1.0 },
+    { vtkFeatureModelSource::TORUS, "Torus", 100000, 0.0, 0.0, 3.0 },
+    { vtkFeatureModelSource::ELLIPSOID, "Ellipsoid", 100000, 0.0, 0.0, 3.0 },
   };
   for (const Part& part : parts)
   {
@@ -623,6 +625,73 @@ int TestFeatureModelSource(int, char*[])
     FP_CHECK(std::abs(share - expectedShare) < 0.0065, "blob: |x| > |y| %.4f vs area %.4f", share, expectedShare); // 4 sd
   }
 
+  {
+    // The torus (major radius R = 0.35 Size, tube radius r = 0.1 Size): on its surface, and
+    // sampled by area: the outer half of the tube (rho > R, angles v in (-pi/2, pi/2) around it)
+    // holds (pi + 2 r / R) / (2 pi) = 0.5909 of the area, where a sampling uniform in v would
+    // give 0.5.
+    auto torus = Generate(vtkFeatureModelSource::TORUS, 100000, 3.0, 0.0);
+    const double R = 0.35 * size, r = 0.1 * size;
+    double surface = 0.0;
+    long outer = 0;
+    for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      torus->GetPoint(i, p);
+      const double rho = std::hypot(p[0], p[1]);
+      surface = std::max(surface, std::abs(std::hypot(rho - R, p[2]) - r));
+      outer += rho > R;
+    }
+    const double share = outer / 100000.0, expectedShare = (M_PI + 2.0 * r / R) / (2.0 * M_PI);
+    std::printf("Torus clean: surface error %.2e, the outer half holds %.4f of the points, %.4f of "
+                "the area\n", surface, share, expectedShare);
+    FP_CHECK(surface < tol, "torus: surface error %g", surface);
+    FP_CHECK(std::abs(share - expectedShare) < 0.0065, "torus: outer half %.4f vs area %.4f", share, expectedShare); // 4 sd
+  }
+  {
+    // The ellipsoid (semi-axes a, b, c = 0.5, 0.3, 0.15 Size): on its surface, and sampled by
+    // area: the caps |x| > a / 2 hold their share of the area, integrated here from the
+    // parametrization (a sin phi cos theta, b sin phi sin theta, c cos phi) and its exact
+    // tangents (midpoint rule).
+    auto ellipsoid = Generate(vtkFeatureModelSource::ELLIPSOID, 100000, 3.0, 0.0);
+    const double a = 0.5 * size, b = 0.3 * size, c = 0.15 * size;
+    double surface = 0.0;
+    long inCaps = 0;
+    for (vtkIdType i = 0; i < ellipsoid->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      ellipsoid->GetPoint(i, p);
+      const double level = std::sqrt(
+        p[0] * p[0] / (a * a) + p[1] * p[1] / (b * b) + p[2] * p[2] / (c * c));
+      surface = std::max(surface, std::abs(level - 1.0) * c); // within c |level - 1| of it
+      inCaps += std::abs(p[0]) > 0.5 * a;
+    }
+    const int nPhi = 600, nTheta = 1200;
+    const double dPhi = M_PI / nPhi, dTheta = 2.0 * M_PI / nTheta;
+    double total = 0.0, caps = 0.0;
+    for (int i = 0; i < nPhi; ++i)
+    {
+      for (int j = 0; j < nTheta; ++j)
+      {
+        const double phi = (i + 0.5) * dPhi, theta = (j + 0.5) * dTheta;
+        const double tp[3] = { a * std::cos(phi) * std::cos(theta), b * std::cos(phi) * std::sin(theta),
+          -c * std::sin(phi) };
+        const double tt[3] = { -a * std::sin(phi) * std::sin(theta), b * std::sin(phi) * std::cos(theta),
+          0.0 };
+        const double dA = std::sqrt(std::pow(tp[1] * tt[2] - tp[2] * tt[1], 2) +
+                            std::pow(tp[2] * tt[0] - tp[0] * tt[2], 2) + std::pow(tp[0] * tt[1] - tp[1] * tt[0], 2)) *
+          dPhi * dTheta;
+        total += dA;
+        caps += std::abs(std::sin(phi) * std::cos(theta)) > 0.5 ? dA : 0.0;
+      }
+    }
+    const double share = inCaps / 100000.0, expectedShare = caps / total;
+    std::printf("Ellipsoid clean: surface error %.2e, |x| > a / 2 holds %.4f of the points, %.4f of "
+                "the area\n", surface, share, expectedShare);
+    FP_CHECK(surface < tol, "ellipsoid: surface error %g", surface);
+    FP_CHECK(std::abs(share - expectedShare) < 0.0065, "ellipsoid: caps %.4f vs area %.4f", share, expectedShare); // 4 sd
+  }
+
   // The models of close and bordered features without noise: on their surfaces, the ground truth
   // exact, and the distance right at a few hand-picked positions (in Size units).
   using Position = std::array<double, 3>;
@@ -761,6 +830,8 @@ int TestFeatureModelSource(int, char*[])
     { vtkFeatureModelSource::THIN_PLATE, convex | corner },
     { vtkFeatureModelSource::HALF_CYLINDER, border | corner },
     { vtkFeatureModelSource::PLATE_WITH_HOLE, border | corner },
+    { vtkFeatureModelSource::TORUS, 0u },
+    { vtkFeatureModelSource::ELLIPSOID, 0u },
   };
   for (const Types& expected : types)
   {

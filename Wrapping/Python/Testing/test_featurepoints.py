@@ -354,3 +354,27 @@ def test_neighborhoods_and_voxel_screen_from_python():
     checker = vtkVoxelDensityContrastFilter()
     checker.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: None)
     assert checker.MarkCandidates(cloud.GetPoints(), valid, spacing, short, candidate) == -1
+
+
+def test_smooth_models_torus_and_ellipsoid():
+    # The two smooth shapes without features: their enum values, names, and clean points on the
+    # exact surfaces (Size 100: torus radii 35 and 10, ellipsoid semi-axes 50, 30, 15).
+    Source = featurepoints.vtkFeatureModelSource
+    assert (Source.TORUS, Source.ELLIPSOID) == (12, 13)
+    assert Source.GetModelName(Source.TORUS) == "Torus"
+    assert Source.GetModelName(Source.ELLIPSOID) == "Ellipsoid"
+    assert Source.GetDefaultNumberOfPoints(Source.TORUS) == 100000
+    source = Source()
+    source.SetNumberOfPoints(3000)
+    source.SetNoiseFactor(0.0)
+    source.SetModelToTorus()
+    source.Update()
+    p = vtk_to_numpy(source.GetOutput().GetPoints().GetData())
+    assert np.abs(np.hypot(np.hypot(p[:, 0], p[:, 1]) - 35.0, p[:, 2]) - 10.0).max() < 1e-9
+    assert vtk_to_numpy(source.GetOutput().GetPointData().GetArray("GroundTruth")).sum() == 0
+    source.SetModelToEllipsoid()
+    source.Update()
+    p = vtk_to_numpy(source.GetOutput().GetPoints().GetData())
+    level = (p[:, 0] / 50.0) ** 2 + (p[:, 1] / 30.0) ** 2 + (p[:, 2] / 15.0) ** 2
+    assert np.abs(level - 1.0).max() < 1e-9 and p.shape == (3000, 3)
+    assert source.GetFeatureCurves().GetNumberOfLines() == 0
