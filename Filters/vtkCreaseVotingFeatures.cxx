@@ -807,7 +807,8 @@ constexpr vtkIdType BlockRows = 8192;
 // row, which the fits and the vote read, are never held for the whole cloud (300 bytes a point
 // at K = 150): Stream() searches them block by block and drops each block once the stages that
 // read it have run; the last stages search again the few rows they need (LoadRows()). The
-// narrow table holds the KNear nearest of every row, for the stages that read no more.
+// narrow table holds the KNear nearest of every row (NormalNeighbors), for the stages that
+// read no more.
 struct CreaseRun
 {
   const featurepoints::PointReader& Reader;
@@ -2077,9 +2078,9 @@ int vtkCreaseVotingFeatures::RequestData(
 
   const int k = std::max(this->NumberOfNeighbors, this->NormalNeighbors);
   // The stages that read every point's nearest but not its k nearest (normals, links, growth,
-  // short borders, thinning) read them from a narrow table kept whole.
-  const int kNear = std::min(k,
-    std::max({ this->NormalNeighbors, BorderNeighbors / 2, ConnectionNeighbors, SheetLinks }));
+  // thinning) read them from a narrow table kept whole.
+  const int kNear =
+    std::min(k, std::max({ this->NormalNeighbors, ConnectionNeighbors, SheetLinks }));
   vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
   std::vector<vtkIdType> ids;
   NeighborTable table;
@@ -2173,7 +2174,7 @@ int vtkCreaseVotingFeatures::RequestData(
 
   this->BeginStage("borders");
   // The k nearest of the points the last stages read them for: the feature points, the border
-  // points and those near them.
+  // points (the short borders read their BorderNeighbors / 2 nearest) and those near them.
   if (!run.LoadRows(neighborhoods, [&](vtkIdType r) {
         const vtkIdType id = ids[r];
         return m[id] || border[id] || run.NearBorder[id];
