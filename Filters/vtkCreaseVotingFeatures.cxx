@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -789,6 +790,39 @@ private:
   std::vector<int32_t> Spilled;
 };
 
+// The fit of a row that one plane explains, where no feature is in view (see OnePlane): no line,
+// explained.
+const CreaseFit OnePlaneFit{};
+
+// The fits of a run, by row. Most rows (a part's faces) have OnePlaneFit and store nothing; the
+// others store theirs, 128 bytes each.
+class FitTable
+{
+public:
+  void Reset(vtkIdType rows)
+  {
+    this->Of.assign(static_cast<size_t>(rows), -1);
+    this->Stored.clear();
+  }
+  bool Has(vtkIdType r) const { return this->Of[r] >= 0; }
+  const CreaseFit& operator[](vtkIdType r) const
+  {
+    return this->Of[r] < 0 ? OnePlaneFit : this->Stored[this->Of[r]];
+  }
+  // A stored fit, to change in place (rows apart may be changed in parallel).
+  CreaseFit& Edit(vtkIdType r) { return this->Stored[this->Of[r]]; }
+  // Stores row r's fit: one thread at a time.
+  void Add(vtkIdType r, const CreaseFit& fit)
+  {
+    this->Of[r] = static_cast<int32_t>(this->Stored.size());
+    this->Stored.push_back(fit);
+  }
+
+private:
+  std::vector<int32_t> Of;
+  std::deque<CreaseFit> Stored;
+};
+
 struct Scratch
 {
   std::vector<int32_t> Row;
@@ -839,7 +873,7 @@ struct CreaseRun
   // One bit per neighbour (and the point) of each row: on the point's sheet.
   size_t Words = 0;
   std::vector<uint64_t> Sheets;
-  std::vector<CreaseFit> Fits;
+  FitTable Fits;
   // Per row: how many of the row's sheet members the chosen fit and the vote use (the point's
   // scale), and the model's gain in noise variances.
   std::vector<int32_t> Scale;
@@ -1086,7 +1120,7 @@ bool OnePlane(const std::vector<Eigen::Vector3d>& p, double variance, CreaseFit&
 
 void CreaseRun::PrepareFits()
 {
-  this->Fits.assign(static_cast<size_t>(this->Rows), CreaseFit());
+  this->Fits.Reset(this->Rows);
   this->Sheets.assign(static_cast<size_t>(this->Rows) * this->Words, 0);
   this->Scale.assign(static_cast<size_t>(this->Rows), this->KFit);
   this->Gain.assign(static_cast<size_t>(this->Rows), 0.0);
@@ -1274,6 +1308,8 @@ bool CreaseRun::LoadRows(
 
 void CreaseRun::FitCreases(const float* normal, vtkIdType begin, vtkIdType end)
 {
+  // The rows' fits, stored after the loop in the rows' order (the one-plane rows' are dropped).
+  std::vector<CreaseFit> fits(static_cast<size_t>(end - begin));
   vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
     Scratch& s = this->Scratches.Local();
     s.Row.resize(static_cast<size_t>(this->K));
@@ -1290,14 +1326,21 @@ void CreaseRun::FitCreases(const float* normal, vtkIdType begin, vtkIdType end)
         std::fill(sheet, sheet + this->Words, ~uint64_t(0));
       }
       this->GatherSheet(r, row, this->KFit, normal, s);
-      if (OnePlane(s.P, this->Variance, this->Fits[r]))
+      if (OnePlane(s.P, this->Variance, fits[i - begin]))
       {
         this->Flat[this->Ids[r]] = 1;
         continue;
       }
-      this->Fits[r] = FitGathered(s, this->Variance);
+      fits[i - begin] = FitGathered(s, this->Variance);
     }
   });
+  for (vtkIdType i = begin; i < end; ++i)
+  {
+    if (!this->Flat[this->Ids[this->Order[i]]])
+    {
+      this->Fits.Add(this->Order[i], fits[i - begin]);
+    }
+  }
 }
 
 void CreaseRun::FitInView(const float* normal, vtkIdType begin, vtkIdType end)
@@ -1306,6 +1349,8 @@ void CreaseRun::FitInView(const float* normal, vtkIdType begin, vtkIdType end)
   // plane does not explain: a feature in view, whose line their fit finds too (left out, Model
   // II's recall at 0.5 s of noise falls from 0.945 to 0.895: the 15-degree creases lose those
   // votes).
+  std::vector<CreaseFit> fits(static_cast<size_t>(end - begin));
+  std::vector<unsigned char> fitted(static_cast<size_t>(end - begin), 0);
   vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
     Scratch& s = this->Scratches.Local();
     s.Row.resize(static_cast<size_t>(this->K));
@@ -1327,10 +1372,18 @@ void CreaseRun::FitInView(const float* normal, vtkIdType begin, vtkIdType end)
       if (inView)
       {
         this->GatherSheet(r, row, this->KFit, normal, s);
-        this->Fits[r] = FitGathered(s, this->Variance);
+        fits[i - begin] = FitGathered(s, this->Variance);
+        fitted[i - begin] = 1;
       }
     }
   });
+  for (vtkIdType i = begin; i < end; ++i)
+  {
+    if (fitted[i - begin])
+    {
+      this->Fits.Add(this->Order[i], fits[i - begin]);
+    }
+  }
 }
 
 // Whether one smooth surface, one hinge or two crossing planes explain the points within the
@@ -1377,7 +1430,7 @@ void CreaseRun::ChooseScales(
         fit = FitGathered(s, this->Variance);
         if (Explains(fit, this->Variance))
         {
-          this->Fits[r] = fit;
+          this->Fits.Edit(r) = fit;
           this->Scale[r] = scale;
           break;
         }
@@ -1393,7 +1446,7 @@ void CreaseRun::ChooseScales(
       }
       if (curvedScale > 0)
       {
-        this->Fits[r] = curvedFit;
+        this->Fits.Edit(r) = curvedFit;
         this->Scale[r] = curvedScale;
         continue;
       }
@@ -1405,7 +1458,7 @@ void CreaseRun::ChooseScales(
       // (a detail) unless the crossing planes, even where they do not cross, fit it within the
       // noise: they take a third of a noise sample's residual, so that a detail is a
       // neighbourhood that no model at all explains.
-      this->Fits[r] = fit;
+      this->Fits.Edit(r) = fit;
       this->Scale[r] = fit.Points;
       if (std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), fit.Cross.RSS2) >
         MisfitBound(fit.Points - 6) * this->Variance)
@@ -1424,7 +1477,11 @@ void CreaseRun::ChooseModels(float* gain, float* angle, vtkIdType begin, vtkIdTy
   for (vtkIdType i = begin; i < end; ++i)
   {
     const vtkIdType r = this->Order[i];
-    CreaseFit& f = this->Fits[r];
+    if (!this->Fits.Has(r))
+    {
+      continue; // OnePlaneFit: explained, no gain, no line
+    }
+    CreaseFit& f = this->Fits.Edit(r);
     f.Explained = Explains(f, this->Variance);
     if (f.Crossing && f.Hinge.RSS2 > MisfitBound(f.Points - 6) * this->Variance &&
       f.Cross.RSS2 < f.Hinge.RSS2)
