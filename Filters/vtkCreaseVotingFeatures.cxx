@@ -1265,6 +1265,8 @@ bool CreaseRun::Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* 
   }
   advance();
   this->Blocks.clear();
+  std::vector<int32_t>().swap(this->Order);
+  std::vector<int32_t>().swap(this->Rank);
   return true;
 }
 
@@ -2214,6 +2216,7 @@ int vtkCreaseVotingFeatures::RequestData(
     values[r] = vote[ids[r]];
   }
   this->GrowThresholdUsed = this->GrowThreshold + featurepoints::UpperMedian(values);
+  std::vector<double>().swap(values);
   if (this->GrowThresholdUsed < this->ThresholdUsed)
   {
     this->NumberOfFeaturePoints += run.Grow(vote, this->GrowThresholdUsed, m);
