@@ -1154,8 +1154,10 @@ bool CreaseRun::Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* 
   }
   const double lo = bounds[2 * axis];
   const double length = bounds[2 * axis + 1] - lo;
-  const vtkIdType slabs = std::max(vtkIdType(1),
-    std::min(this->Rows, this->D > 0.0 ? static_cast<vtkIdType>(length / this->D) : vtkIdType(1)));
+  const double wanted = this->D > 0.0 ? length / this->D : 1.0;
+  const vtkIdType slabs = wanted >= static_cast<double>(this->Rows)
+    ? std::max(this->Rows, vtkIdType(1))
+    : std::max(vtkIdType(1), static_cast<vtkIdType>(wanted));
   const double thickness = length > 0.0 ? length / slabs : 1.0;
   auto slabOf = [&](double x) {
     const double f = std::floor((x - lo) / thickness);
