@@ -19,8 +19,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -802,6 +804,39 @@ private:
   std::vector<int32_t> Spilled;
 };
 
+// The fit of a row that one plane explains, where no feature is in view (see OnePlane): no line,
+// explained.
+const CreaseFit OnePlaneFit{};
+
+// The fits of a run, by row. Most rows (a part's faces) have OnePlaneFit and store nothing; the
+// others store theirs, 128 bytes each.
+class FitTable
+{
+public:
+  void Reset(vtkIdType rows)
+  {
+    this->Of.assign(static_cast<size_t>(rows), -1);
+    this->Stored.clear();
+  }
+  bool Has(vtkIdType r) const { return this->Of[r] >= 0; }
+  const CreaseFit& operator[](vtkIdType r) const
+  {
+    return this->Of[r] < 0 ? OnePlaneFit : this->Stored[this->Of[r]];
+  }
+  // A stored fit, to change in place (rows apart may be changed in parallel).
+  CreaseFit& Edit(vtkIdType r) { return this->Stored[this->Of[r]]; }
+  // Stores row r's fit: one thread at a time.
+  void Add(vtkIdType r, const CreaseFit& fit)
+  {
+    this->Of[r] = static_cast<int32_t>(this->Stored.size());
+    this->Stored.push_back(fit);
+  }
+
+private:
+  std::vector<int32_t> Of;
+  std::deque<CreaseFit> Stored;
+};
+
 struct Scratch
 {
   std::vector<int32_t> Row;
@@ -811,24 +846,51 @@ struct Scratch
   SheetReach Sheet;
 };
 
-// Everything one run of the detector shares between its stages: the neighbour table (renumbered
-// cloud, one row of k nearest per scored point), the fits, and the output arrays' storage. Each
-// stage is one member function; RequestData calls them in order.
+// Rows of the wide neighbour search taken at a time (see CreaseRun::Stream()).
+constexpr vtkIdType BlockRows = 8192;
+
+// Everything one run of the detector shares between its stages: the neighbour tables (renumbered
+// cloud, one row of nearest points per scored point), the fits, and the output arrays' storage.
+// Each stage is one member function; RequestData calls them in order. The K nearest of every
+// row, which the fits and the vote read, are never held for the whole cloud (300 bytes a point
+// at K = 150): Stream() searches them block by block and drops each block once the stages that
+// read it have run; the last stages search again the few rows they need (LoadRows()). The
+// narrow table holds the KNear nearest of every row (NormalNeighbors), for the stages that
+// read no more.
 struct CreaseRun
 {
   const featurepoints::PointReader& Reader;
   const std::vector<vtkIdType>& Ids;
-  const NeighborTable& Table;
-  const int K;       // width of a table row
+  const NeighborTable& Table; // the KNear nearest of every row
+  const int K;       // width of a row: the widest neighbourhood a stage reads
+  const int KNear;   // width of Table's rows
   const int KFit;    // the widest fit (NumberOfNeighbors)
   const double D;    // mean spacing
   const vtkIdType N; // points
   vtkIdType Rows = 0;
   std::vector<vtkIdType> RowOf;
+  // The order in which Stream() takes the rows (Order[i] is a row, Rank[Order[i]] = i): along
+  // the longest side of the cloud's bounding box, so that the rows a block of them reads lie
+  // in a slab about two neighbourhoods thick.
+  std::vector<int32_t> Order, Rank;
+  // The K nearest: by block of BlockRows rows of Order while Stream() runs, and the rows
+  // LoadRows() found (SubsetSlot[r] >= 0) after it.
+  std::vector<std::unique_ptr<NeighborTable>> Blocks;
+  NeighborTable Subset;
+  std::vector<int32_t> SubsetSlot;
+  // By point id: its SheetLinks nearest (-1 where fewer), one plane explains its sheet (see
+  // OnePlane), its fit votes (these three while Stream() runs); a border point (before the short
+  // borders are dropped) lies within the band among its kb nearest on its sheet.
+  std::vector<int32_t> Links;
+  std::vector<unsigned char> Flat, Voter, NearBorder;
+  // Distributed runs: Stream() keeps the K nearest of every row and runs each pass once over all
+  // of them, so that the halo's values are exchanged between the passes (see RequestData).
+  bool Whole = false;
+  vtkSMPThreadLocal<Scratch> Scratches;
   // One bit per neighbour (and the point) of each row: on the point's sheet.
   size_t Words = 0;
   std::vector<uint64_t> Sheets;
-  std::vector<CreaseFit> Fits;
+  FitTable Fits;
   // Per row: how many of the row's sheet members the chosen fit and the vote use (the point's
   // scale), and the model's gain in noise variances.
   std::vector<int32_t> Scale;
@@ -866,11 +928,12 @@ struct CreaseRun
   bool IsOwn(vtkIdType id) const { return !this->Own || this->Own[id] != 0; }
 
   CreaseRun(const featurepoints::PointReader& reader, const std::vector<vtkIdType>& ids,
-    const NeighborTable& table, int k, int kfit, double d, vtkIdType n)
+    const NeighborTable& table, int k, int knear, int kfit, double d, vtkIdType n)
     : Reader(reader)
     , Ids(ids)
     , Table(table)
     , K(k)
+    , KNear(knear)
     , KFit(kfit)
     , D(d)
     , N(n)
@@ -885,37 +948,71 @@ struct CreaseRun
   }
 
   // The first `width` entries of row r (all by default), in `buffer` (K entries) or elsewhere.
+  // Wider than KNear: only for the rows of a block Stream() holds, or that LoadRows() found.
   const int32_t* Row(vtkIdType r, int32_t* buffer, int width = -1) const
   {
-    return this->Table.Row(r, buffer, width < 0 ? this->K : std::min(width, this->K));
+    width = width < 0 ? this->K : std::min(width, this->K);
+    if (width <= this->KNear)
+    {
+      return this->Table.Row(r, buffer, width);
+    }
+    if (!this->SubsetSlot.empty() && this->SubsetSlot[r] >= 0)
+    {
+      return this->Subset.Row(this->SubsetSlot[r], buffer, width);
+    }
+    return this->Blocks[this->Rank[r] / BlockRows]->Row(this->Rank[r] % BlockRows, buffer, width);
   }
   const uint64_t* Sheet(vtkIdType r) const { return this->Sheets.data() + r * this->Words; }
 
   // Step 1a: PCA normals of the `kn` nearest, turned away from the cloud's centre, and sigma^2:
   // the median over the cloud of their quadric's residual per degree of freedom.
   void ComputeNormals(int kn, const double center[3], float* normal);
-  // Steps 1b-3 at the widest scale: the sheet of every point, its two-plane fit.
-  void FitCreases(const float* normal);
+  // Storage of the fits, the sheets and the per-point flags of Stream()'s passes.
+  void PrepareFits();
+  // Runs the passes over the rows in turn, each over a block of rows (positions begin to end - 1
+  // of Order) once every row the block's rows read has been through the pass before: passes[0]
+  // as soon as the block's K nearest are found, then passes[1] and passes[2]; the block is
+  // dropped after passes[2]. The K nearest are searched BlockRows rows at a time (progress from
+  // progressStart to progressEnd of `algorithm`); returns false when it is aborted.
+  bool Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* algorithm,
+    double progressStart, double progressEnd,
+    const std::function<void(vtkIdType, vtkIdType)> passes[3]);
+  // The K nearest of the rows r with wanted(r), kept from now on (see Row()).
+  bool LoadRows(vtkPointCloudNeighborhoods* neighborhoods, const std::function<bool(vtkIdType)>& wanted);
+  // Steps 1b-3 at the widest scale, rows begin to end - 1: the sheet of every point, its
+  // two-plane fit.
+  void FitCreases(const float* normal, vtkIdType begin, vtkIdType end);
+  // The fits of the one-plane points with a feature in view (after FitCreases() on every row
+  // they read).
+  void FitInView(const float* normal, vtkIdType begin, vtkIdType end);
   // Scale per point: where the widest hinge does not explain the neighbourhood, the largest
   // smaller scale whose hinge does. Sets detail[id] where not even the smallest is explained.
-  void ChooseScales(const float* normal, int smallest, unsigned char* detail);
+  void ChooseScales(
+    const float* normal, int smallest, unsigned char* detail, vtkIdType begin, vtkIdType end);
   // The model of each fit (hinge or crossing planes) and its gain.
-  void ChooseModels(float* gain, float* angle);
+  void ChooseModels(float* gain, float* angle, vtkIdType begin, vtkIdType end);
   // Distributed runs: the halo's models (what the votes and the directions read) from their
-  // owners.
+  // owners (after ChooseModels() on every row).
   void ShareModels();
-  // Step 4: the vote fraction of every point, and its Offset.
-  void CastVotes(double minAngle, double bandWidth, float* vote);
+  // Whether each fit votes (Voter).
+  void MarkVoters(double minAngle, vtkIdType begin, vtkIdType end);
+  // Step 4: the vote fraction of every point, and its Offset (after MarkVoters() on every row
+  // they read).
+  void CastVotes(double bandWidth, float* vote, vtkIdType begin, vtkIdType end);
   // Step 6: hysteresis growth of the mask through points voting above growAt, stepping from own
   // points only (a distributed run repeats it after each exchange of the halo's mask).
   vtkIdType Grow(const float* vote, double growAt, unsigned char* mask) const;
   // Open borders: an empty sector of the tangent plane. Sets border[id] and its outward
-  // direction (unit, in the tangent plane) in `outward`.
-  void FindBorders(int kb, unsigned char* border, float* outward) const;
+  // direction (unit, in the tangent plane) in `outward`. DropShortBorders() follows, once every
+  // row has been through.
+  void FindBorders(int kb, unsigned char* border, float* outward, vtkIdType begin, vtkIdType end) const;
   // Drops the connected sets of border points smaller than `shortest` (rims of sampling voids).
   void DropShortBorders(int shortest, unsigned char* border) const;
+  // NearBorder of the rows begin to end - 1 (after FindBorders() on every row they read).
+  void MarkNearBorders(int kb, double bandWidth, const unsigned char* border, vtkIdType begin, vtkIdType end);
   // The border band: points within bandWidth d of a border point (among their kb nearest)
-  // join it, as the crease band does.
+  // join it, as the crease band does. Only NearBorder points can (DropShortBorders() only takes
+  // border points away).
   void WidenBorders(int kb, double bandWidth, unsigned char* border) const;
   // FeatureType of the mask's points; minAngle as for the vote, kb as for the borders.
   void ClassifyFeatures(const unsigned char* mask, const unsigned char* border,
@@ -1072,62 +1169,286 @@ bool OnePlane(const std::vector<Eigen::Vector3d>& p, double variance, CreaseFit&
   return true;
 }
 
-void CreaseRun::FitCreases(const float* normal)
+void CreaseRun::PrepareFits()
 {
-  this->Fits.assign(static_cast<size_t>(this->Rows), CreaseFit());
+  this->Fits.Reset(this->Rows);
   this->Sheets.assign(static_cast<size_t>(this->Rows) * this->Words, 0);
   this->Scale.assign(static_cast<size_t>(this->Rows), this->KFit);
+  this->Gain.assign(static_cast<size_t>(this->Rows), 0.0);
+  this->Offset.assign(static_cast<size_t>(this->N), -1.0f);
   // By point id: its SheetLinks nearest (the start of its row), -1 where none. The one-sheet
   // links read these for every neighbour of every point: a table of their own keeps them
   // together in memory instead of one cache line per row of the wide table.
-  std::vector<int32_t> links(static_cast<size_t>(this->N) * SheetLinks, -1);
+  this->Links.assign(static_cast<size_t>(this->N) * SheetLinks, -1);
   const int width = std::min(SheetLinks, this->K);
   int32_t first[SheetLinks];
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
     const int32_t* row = this->Row(r, first, width);
-    std::copy(row, row + width, links.data() + this->Ids[r] * SheetLinks);
+    std::copy(row, row + width, this->Links.data() + this->Ids[r] * SheetLinks);
   }
-  // By point id: one plane explains its sheet's points (see OnePlane).
-  std::vector<unsigned char> flat(static_cast<size_t>(this->N), 0);
-  vtkSMPThreadLocal<Scratch> scratch;
-  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
-    Scratch& s = scratch.Local();
-    s.Row.resize(static_cast<size_t>(this->K));
-    for (vtkIdType r = begin; r < end; ++r)
+  this->Flat.assign(static_cast<size_t>(this->N), 0);
+  this->Voter.assign(static_cast<size_t>(this->N), 0);
+  // A whole run marks no NearBorder (every row is kept): any point may join the border band.
+  this->NearBorder.assign(static_cast<size_t>(this->N), this->Whole ? 1 : 0);
+}
+
+bool CreaseRun::Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* algorithm,
+  double progressStart, double progressEnd,
+  const std::function<void(vtkIdType, vtkIdType)> passes[3])
+{
+  // Slabs one mean spacing thick (at most one per row) across the longest side of the box.
+  const double* bounds = neighborhoods->GetBounds();
+  int axis = 0;
+  for (int a = 1; a < 3; ++a)
+  {
+    axis = bounds[2 * a + 1] - bounds[2 * a] > bounds[2 * axis + 1] - bounds[2 * axis] ? a : axis;
+  }
+  const double lo = bounds[2 * axis];
+  const double length = bounds[2 * axis + 1] - lo;
+  const double wanted = this->D > 0.0 ? length / this->D : 1.0;
+  const vtkIdType slabs = wanted >= static_cast<double>(this->Rows)
+    ? std::max(this->Rows, vtkIdType(1))
+    : std::max(vtkIdType(1), static_cast<vtkIdType>(wanted));
+  const double thickness = length > 0.0 ? length / slabs : 1.0;
+  auto slabOf = [&](double x) {
+    const double f = std::floor((x - lo) / thickness);
+    return f < 0.0 ? vtkIdType(0) : (f >= slabs - 1 ? slabs - 1 : static_cast<vtkIdType>(f));
+  };
+  // A counting sort of the rows by slab, by row within a slab.
+  std::vector<int32_t> slab(static_cast<size_t>(this->Rows));
+  std::vector<vtkIdType> start(static_cast<size_t>(slabs) + 1, 0);
+  double x[3];
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    this->Reader.Get(this->Ids[r], x);
+    slab[r] = static_cast<int32_t>(slabOf(x[axis]));
+    ++start[slab[r] + 1];
+  }
+  for (vtkIdType b = 0; b < slabs; ++b)
+  {
+    start[b + 1] += start[b];
+  }
+  this->Order.resize(static_cast<size_t>(this->Rows));
+  this->Rank.resize(static_cast<size_t>(this->Rows));
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    const vtkIdType i = start[slab[r]]++;
+    this->Order[i] = static_cast<int32_t>(r);
+    this->Rank[r] = static_cast<int32_t>(i);
+  }
+  if (this->K <= this->KNear)
+  {
+    // The narrow table holds every row whole.
+    for (int pass = 0; pass < 3; ++pass)
     {
+      passes[pass](0, this->Rows);
+    }
+    return true;
+  }
+  if (this->Whole)
+  {
+    // The K nearest of every row, kept (LoadRows() finds them there); each pass once over all
+    // the rows, so that the halo's values can be exchanged between two passes.
+    this->SubsetSlot.resize(static_cast<size_t>(this->Rows));
+    this->Subset.Reset(this->Rows, this->K);
+    std::vector<vtkIdType> rowIds;
+    std::vector<int32_t> found;
+    for (vtkIdType first = 0; first < this->Rows; first += BlockRows)
+    {
+      const vtkIdType count = std::min(BlockRows, this->Rows - first);
+      rowIds.assign(this->Ids.begin() + first, this->Ids.begin() + first + count);
+      const double begin =
+        progressStart + (progressEnd - progressStart) * static_cast<double>(first) / this->Rows;
+      const double end = progressStart +
+        (progressEnd - progressStart) * static_cast<double>(first + count) / this->Rows;
+      if (!neighborhoods->FindNearestNeighbors(
+            this->K, rowIds, found, nullptr, algorithm, begin, end))
+      {
+        return false;
+      }
+      this->Subset.Store(first, count, found.data());
+      for (vtkIdType r = first; r < first + count; ++r)
+      {
+        this->SubsetSlot[r] = static_cast<int32_t>(r);
+      }
+    }
+    for (int pass = 0; pass < 3; ++pass)
+    {
+      passes[pass](0, this->Rows);
+    }
+    std::vector<int32_t>().swap(this->Order);
+    std::vector<int32_t>().swap(this->Rank);
+    return true;
+  }
+  const vtkIdType blocks = (this->Rows + BlockRows - 1) / BlockRows;
+  this->Blocks.clear();
+  this->Blocks.resize(static_cast<size_t>(blocks));
+  // Per block: the last slab its rows read (each row's farthest neighbour is at most its
+  // distance away along the axis; one slab more for rounding).
+  std::vector<vtkIdType> reach(static_cast<size_t>(blocks), 0);
+  vtkIdType through[3] = { 0, 0, 0 }; // blocks through each pass
+  // Whether every row that block c reads has been through `done` blocks.
+  auto ready = [&](vtkIdType c, vtkIdType done) {
+    return done == blocks || reach[c] < slab[this->Order[done * BlockRows]];
+  };
+  auto advance = [&]() {
+    for (bool moved = true; moved;)
+    {
+      moved = false;
+      for (int pass = 1; pass < 3 && !moved; ++pass)
+      {
+        const vtkIdType c = through[pass];
+        if (c < through[pass - 1] && ready(c, through[pass - 1]))
+        {
+          passes[pass](c * BlockRows, std::min((c + 1) * BlockRows, this->Rows));
+          ++through[pass];
+          moved = true;
+          if (pass == 2)
+          {
+            this->Blocks[c].reset();
+          }
+        }
+      }
+    }
+  };
+  std::vector<vtkIdType> blockIds;
+  std::vector<int32_t> found;
+  double y[3];
+  for (vtkIdType c = 0; c < blocks; ++c)
+  {
+    const vtkIdType first = c * BlockRows;
+    const vtkIdType count = std::min(BlockRows, this->Rows - first);
+    blockIds.resize(static_cast<size_t>(count));
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      blockIds[i] = this->Ids[this->Order[first + i]];
+    }
+    const double begin =
+      progressStart + (progressEnd - progressStart) * static_cast<double>(first) / this->Rows;
+    const double end = progressStart +
+      (progressEnd - progressStart) * static_cast<double>(first + count) / this->Rows;
+    if (!neighborhoods->FindNearestNeighbors(this->K, blockIds, found, nullptr, algorithm, begin, end))
+    {
+      return false;
+    }
+    this->Blocks[c].reset(new NeighborTable);
+    this->Blocks[c]->Reset(count, this->K);
+    this->Blocks[c]->Store(0, count, found.data());
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      const int32_t* row = found.data() + i * this->K;
+      const int length = featurepoints::RowLength(row, this->K);
+      this->Reader.Get(blockIds[i], x);
+      double radius = 0.0;
+      if (length > 0)
+      {
+        this->Reader.Get(row[length - 1], y);
+        radius = std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
+      }
+      reach[c] = std::max(reach[c], slabOf(x[axis] + radius) + 1);
+    }
+    passes[0](first, first + count);
+    through[0] = c + 1;
+    advance();
+  }
+  advance();
+  this->Blocks.clear();
+  std::vector<int32_t>().swap(this->Order);
+  std::vector<int32_t>().swap(this->Rank);
+  return true;
+}
+
+bool CreaseRun::LoadRows(
+  vtkPointCloudNeighborhoods* neighborhoods, const std::function<bool(vtkIdType)>& wanted)
+{
+  if (this->K <= this->KNear || this->Whole)
+  {
+    return true; // the narrow table or Stream()'s holds every row whole
+  }
+  this->SubsetSlot.assign(static_cast<size_t>(this->Rows), -1);
+  std::vector<vtkIdType> rows;
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    if (wanted(r))
+    {
+      this->SubsetSlot[r] = static_cast<int32_t>(rows.size());
+      rows.push_back(r);
+    }
+  }
+  const vtkIdType count = static_cast<vtkIdType>(rows.size());
+  this->Subset.Reset(count, this->K);
+  std::vector<vtkIdType> blockIds;
+  std::vector<int32_t> found;
+  for (vtkIdType first = 0; first < count; first += BlockRows)
+  {
+    const vtkIdType size = std::min(BlockRows, count - first);
+    blockIds.resize(static_cast<size_t>(size));
+    for (vtkIdType i = 0; i < size; ++i)
+    {
+      blockIds[i] = this->Ids[rows[first + i]];
+    }
+    if (!neighborhoods->FindNearestNeighbors(this->K, blockIds, found))
+    {
+      return false;
+    }
+    this->Subset.Store(first, size, found.data());
+  }
+  return true;
+}
+
+void CreaseRun::FitCreases(const float* normal, vtkIdType begin, vtkIdType end)
+{
+  // The rows' fits, stored after the loop in the rows' order (the one-plane rows' are dropped).
+  std::vector<CreaseFit> fits(static_cast<size_t>(end - begin));
+  vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
+    Scratch& s = this->Scratches.Local();
+    s.Row.resize(static_cast<size_t>(this->K));
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      const vtkIdType r = this->Order[i];
       const int32_t* row = this->Row(r, s.Row.data());
       const int count = featurepoints::RowLength(row, this->KFit);
       uint64_t* sheet = this->Sheets.data() + r * this->Words;
       // Every neighbour when the sheet holds fewer than 8 points (an isolated point), so that
       // the fit has something to work on.
-      if (s.Sheet.Reach(this->Ids[r], row, count, links, sheet) < 8)
+      if (s.Sheet.Reach(this->Ids[r], row, count, this->Links, sheet) < 8)
       {
         std::fill(sheet, sheet + this->Words, ~uint64_t(0));
       }
       this->GatherSheet(r, row, this->KFit, normal, s);
-      if (OnePlane(s.P, this->Variance, this->Fits[r]))
+      if (OnePlane(s.P, this->Variance, fits[i - begin]))
       {
-        flat[this->Ids[r]] = 1;
+        this->Flat[this->Ids[r]] = 1;
         continue;
       }
-      this->Fits[r] = FitGathered(s, this->Variance);
+      fits[i - begin] = FitGathered(s, this->Variance);
     }
   });
-  if (this->FromOwners)
+  for (vtkIdType i = begin; i < end; ++i)
   {
-    this->FromOwners(flat.data(), 1);
+    if (!this->Flat[this->Ids[this->Order[i]]])
+    {
+      this->Fits.Add(this->Order[i], fits[i - begin]);
+    }
   }
+}
+
+void CreaseRun::FitInView(const float* normal, vtkIdType begin, vtkIdType end)
+{
   // The one-plane points with a point among their ViewNeighbors nearest on their sheet that one
   // plane does not explain: a feature in view, whose line their fit finds too (left out, Model
   // II's recall at 0.5 s of noise falls from 0.945 to 0.895: the 15-degree creases lose those
   // votes).
-  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
-    Scratch& s = scratch.Local();
+  std::vector<CreaseFit> fits(static_cast<size_t>(end - begin));
+  std::vector<unsigned char> fitted(static_cast<size_t>(end - begin), 0);
+  vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
+    Scratch& s = this->Scratches.Local();
     s.Row.resize(static_cast<size_t>(this->K));
-    for (vtkIdType r = begin; r < end; ++r)
+    for (vtkIdType i = first; i < last; ++i)
     {
-      if (!flat[this->Ids[r]])
+      const vtkIdType r = this->Order[i];
+      if (!this->Flat[this->Ids[r]])
       {
         continue;
       }
@@ -1137,15 +1458,23 @@ void CreaseRun::FitCreases(const float* normal)
       bool inView = false;
       for (int j = 0; j < std::min(count, ViewNeighbors) && !inView; ++j)
       {
-        inView = !flat[row[j]] && Reached(sheet, j + 1);
+        inView = !this->Flat[row[j]] && Reached(sheet, j + 1);
       }
       if (inView)
       {
         this->GatherSheet(r, row, this->KFit, normal, s);
-        this->Fits[r] = FitGathered(s, this->Variance);
+        fits[i - begin] = FitGathered(s, this->Variance);
+        fitted[i - begin] = 1;
       }
     }
   });
+  for (vtkIdType i = begin; i < end; ++i)
+  {
+    if (fitted[i - begin])
+    {
+      this->Fits.Add(this->Order[i], fits[i - begin]);
+    }
+  }
 }
 
 // Whether one smooth surface, one hinge or two crossing planes explain the points within the
@@ -1157,19 +1486,20 @@ inline bool Explains(const CreaseFit& f, double variance)
     MisfitBound(f.Points - 6) * variance;
 }
 
-void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* detail)
+void CreaseRun::ChooseScales(
+  const float* normal, int smallest, unsigned char* detail, vtkIdType first, vtkIdType last)
 {
-  vtkSMPThreadLocal<Scratch> scratch;
-  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
-    Scratch& s = scratch.Local();
+  vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType end) {
+    Scratch& s = this->Scratches.Local();
     // Whether the curved hinge explains the gathered points (two quadrics: 12 parameters)
     // within the noise.
     auto curvedExplains = [&](const CreaseFit& fit) {
       const double curved = FitCurvedHinge(s.P, fit.Hinge, s.Side);
       return curved >= 0.0 && curved <= MisfitBound(fit.Points - 12) * this->Variance;
     };
-    for (vtkIdType r = begin; r < end; ++r)
+    for (vtkIdType i = begin; i < end; ++i)
     {
+      const vtkIdType r = this->Order[i];
       if (Explains(this->Fits[r], this->Variance))
       {
         continue;
@@ -1191,7 +1521,7 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
         fit = FitGathered(s, this->Variance);
         if (Explains(fit, this->Variance))
         {
-          this->Fits[r] = fit;
+          this->Fits.Edit(r) = fit;
           this->Scale[r] = scale;
           break;
         }
@@ -1207,7 +1537,7 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
       }
       if (curvedScale > 0)
       {
-        this->Fits[r] = curvedFit;
+        this->Fits.Edit(r) = curvedFit;
         this->Scale[r] = curvedScale;
         continue;
       }
@@ -1219,7 +1549,7 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
       // (a detail) unless the crossing planes, even where they do not cross, fit it within the
       // noise: they take a third of a noise sample's residual, so that a detail is a
       // neighbourhood that no model at all explains.
-      this->Fits[r] = fit;
+      this->Fits.Edit(r) = fit;
       this->Scale[r] = fit.Points;
       if (std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), fit.Cross.RSS2) >
         MisfitBound(fit.Points - 6) * this->Variance)
@@ -1230,15 +1560,19 @@ void CreaseRun::ChooseScales(const float* normal, int smallest, unsigned char* d
   });
 }
 
-void CreaseRun::ChooseModels(float* gain, float* angle)
+void CreaseRun::ChooseModels(float* gain, float* angle, vtkIdType begin, vtkIdType end)
 {
-  this->Gain.resize(static_cast<size_t>(this->Rows));
   // Model choice: the hinge, unless it leaves more than the noise explains (surfaces
   // crossing, corners, strongly curved patches); then the crossing planes, as fitted. The chosen
   // model replaces the hinge in place: from here on Fits[r].Hinge is the fit that votes.
-  for (vtkIdType r = 0; r < this->Rows; ++r)
+  for (vtkIdType i = begin; i < end; ++i)
   {
-    CreaseFit& f = this->Fits[r];
+    const vtkIdType r = this->Order[i];
+    if (!this->Fits.Has(r))
+    {
+      continue; // OnePlaneFit: explained, no gain, no line
+    }
+    CreaseFit& f = this->Fits.Edit(r);
     f.Explained = Explains(f, this->Variance);
     if (f.Crossing && f.Hinge.RSS2 > MisfitBound(f.Points - 6) * this->Variance &&
       f.Cross.RSS2 < f.Hinge.RSS2)
@@ -1270,10 +1604,19 @@ void CreaseRun::ShareModels()
   this->FromOwners(models.data(), static_cast<int>(sizeof(Model)));
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
+    if (this->IsOwn(this->Ids[r]))
+    {
+      continue;
+    }
+    // A halo row whose own fit was one plane (none stored) takes its owner's model all the same.
     const Model& model = models[this->Ids[r]];
+    if (!this->Fits.Has(r))
+    {
+      this->Fits.Add(r, OnePlaneFit);
+    }
     this->Gain[r] = model.Gain;
-    this->Fits[r].Hinge = model.Hinge;
-    this->Fits[r].Explained = model.Explained;
+    this->Fits.Edit(r).Hinge = model.Hinge;
+    this->Fits.Edit(r).Explained = model.Explained;
   }
 }
 
@@ -1290,26 +1633,29 @@ double CreaseRun::LineDistance(vtkIdType r, const double v[3]) const
   return std::sqrt(std::max(w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - along * along, 0.0));
 }
 
-void CreaseRun::CastVotes(double minAngle, double bandWidth, float* vote)
+void CreaseRun::MarkVoters(double minAngle, vtkIdType begin, vtkIdType end)
+{
+  // One byte per point says whether its fit may vote, so that the vote reads only voters' fits.
+  for (vtkIdType i = begin; i < end; ++i)
+  {
+    const vtkIdType r = this->Order[i];
+    const CreaseLine& f = this->Fits[r].Hinge;
+    this->Voter[this->Ids[r]] =
+      f.HasLine && this->Gain[r] > MinimumGain && !(f.Angle < minAngle) ? 1 : 0;
+  }
+}
+
+void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdType last)
 {
   const double band = bandWidth * this->D;
-  // One byte per point says whether its fit may vote, so that the vote reads only voters' fits.
-  std::vector<unsigned char> voter(static_cast<size_t>(this->N), 0);
-  this->Offset.assign(static_cast<size_t>(this->N), -1.0f);
+  const unsigned char* voter = this->Voter.data();
   vtkSMPThreadLocal<std::vector<double>> scratch;
-  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const CreaseLine& f = this->Fits[r].Hinge;
-      voter[this->Ids[r]] =
-        f.HasLine && this->Gain[r] > MinimumGain && !(f.Angle < minAngle) ? 1 : 0;
-    }
-  });
-  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType end) {
     double x[3], y[3];
     std::vector<int32_t> buffer(static_cast<size_t>(this->K));
-    for (vtkIdType r = begin; r < end; ++r)
+    for (vtkIdType i = begin; i < end; ++i)
     {
+      const vtkIdType r = this->Order[i];
       const vtkIdType id = this->Ids[r];
       const int32_t* row = this->Row(r, buffer.data());
       const int count = featurepoints::RowLength(row, this->KFit);
@@ -1436,20 +1782,22 @@ void CreaseRun::GatherSheetNearest(
   }
 }
 
-void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
+void CreaseRun::FindBorders(
+  int kb, unsigned char* border, float* outward, vtkIdType first, vtkIdType last) const
 {
   struct BorderScratch
   {
     std::vector<double> Q, Angles;
   };
   vtkSMPThreadLocal<BorderScratch> scratch;
-  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType end) {
     std::vector<double>& q = scratch.Local().Q;
     std::vector<int32_t> buffer(static_cast<size_t>(this->K));
     double x[3], y[3], lambda[3], nrm[3];
     const double none[3] = { 0.0, 0.0, 0.0 };
-    for (vtkIdType r = begin; r < end; ++r)
+    for (vtkIdType i = begin; i < end; ++i)
     {
+      const vtkIdType r = this->Order[i];
       const vtkIdType id = this->Ids[r];
       // The point's kb nearest on its own sheet: on a thin wall (both sides one sheet) they
       // fold back on each other at the rim, which then shows as a border too.
@@ -1505,7 +1853,6 @@ void CreaseRun::FindBorders(int kb, unsigned char* border, float* outward) const
       }
     }
   });
-  this->DropShortBorders(kb / 2, border);
 }
 
 void CreaseRun::DropShortBorders(int shortest, unsigned char* border) const
@@ -1590,6 +1937,39 @@ void CreaseRun::DropShortBorders(int shortest, unsigned char* border) const
   }
 }
 
+void CreaseRun::MarkNearBorders(
+  int kb, double bandWidth, const unsigned char* border, vtkIdType first, vtkIdType last)
+{
+  const double band2 = bandWidth * this->D * bandWidth * this->D;
+  vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType end) {
+    double x[3], y[3];
+    std::vector<int32_t> buffer(static_cast<size_t>(this->K));
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const vtkIdType r = this->Order[i];
+      const vtkIdType id = this->Ids[r];
+      const int32_t* row = this->Row(r, buffer.data(), kb);
+      const int length = featurepoints::RowLength(row, std::min(kb, this->K));
+      const uint64_t* sheet = this->Sheet(r);
+      this->Reader.Get(id, x);
+      for (int j = 0; j < length; ++j)
+      {
+        if (!border[row[j]] || !Reached(sheet, j + 1))
+        {
+          continue;
+        }
+        this->Reader.Get(row[j], y);
+        const double v[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
+        if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= band2)
+        {
+          this->NearBorder[id] = 1;
+          break;
+        }
+      }
+    }
+  });
+}
+
 void CreaseRun::WidenBorders(int kb, double bandWidth, unsigned char* border) const
 {
   const double band2 = bandWidth * this->D * bandWidth * this->D;
@@ -1600,7 +1980,7 @@ void CreaseRun::WidenBorders(int kb, double bandWidth, unsigned char* border) co
     for (vtkIdType r = begin; r < end; ++r)
     {
       const vtkIdType id = this->Ids[r];
-      if (border[id])
+      if (border[id] || !this->NearBorder[id])
       {
         continue;
       }
@@ -1929,22 +2309,26 @@ int vtkCreaseVotingFeatures::RequestData(
   };
 
   const int k = std::max(this->NumberOfNeighbors, this->NormalNeighbors);
+  // The stages that read every point's nearest but not its k nearest (normals, links, growth,
+  // thinning) read them from a narrow table kept whole.
+  const int kNear =
+    std::min(k, std::max({ this->NormalNeighbors, ConnectionNeighbors, SheetLinks }));
   vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
   std::vector<vtkIdType> ids;
   NeighborTable table;
   auto store = [&](vtkIdType first, vtkIdType count, const int32_t* block) {
     if (first == 0)
     {
-      table.Reset(static_cast<vtkIdType>(ids.size()), k);
+      table.Reset(static_cast<vtkIdType>(ids.size()), kNear);
     }
     table.Store(first, count, block);
   };
-  if (!this->SearchAllPoints(points, n, k, neighborhoods, ids, store, 0.4))
+  if (!this->SearchAllPoints(points, n, kNear, neighborhoods, ids, store, 0.1))
   {
     return finish();
   }
   const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
-  CreaseRun run(reader, ids, table, k, this->NumberOfNeighbors, this->MeanSpacing, n);
+  CreaseRun run(reader, ids, table, k, kNear, this->NumberOfNeighbors, this->MeanSpacing, n);
   const bool distributed = this->IsDistributed() && !this->Owned.empty();
   if (distributed)
   {
@@ -1972,6 +2356,9 @@ int vtkCreaseVotingFeatures::RequestData(
     run.FromOwners = [&](void* values, int bytes) {
       this->ShareHaloValues(static_cast<unsigned char*>(values), bytes, HALO_FROM_OWNER);
     };
+    // The stages exchange the halo's values between them, collectively over the whole piece:
+    // one block holds the k nearest of every row, each pass runs once over all of them.
+    run.Whole = true;
   }
   float* normal = normals->GetPointer(0);
   float* vote = votes->GetPointer(0);
@@ -1979,25 +2366,59 @@ int vtkCreaseVotingFeatures::RequestData(
 
   this->BeginStage("normals");
   run.ComputeNormals(this->NormalNeighbors, this->CloudCenter(neighborhoods), normal);
-  this->UpdateProgress(0.5);
-
-  this->BeginStage("crease fits");
-  run.FitCreases(normal);
   this->NoiseSigma = std::sqrt(run.Variance);
+  this->UpdateProgress(0.2);
+
+  // Steps 0-4 and the borders' empty sectors, row by row as the k nearest are found.
+  this->BeginStage("crease fits");
+  run.PrepareFits();
   std::vector<unsigned char> detail(static_cast<size_t>(n), 0);
-  if (this->MultiScale)
+  std::vector<unsigned char> border(static_cast<size_t>(n), 0);
+  std::vector<float> outward(3 * static_cast<size_t>(n), 0.0f);
+  const bool widen = this->Borders && !this->ThinFeatures;
+  const std::function<void(vtkIdType, vtkIdType)> passes[3] = {
+    [&](vtkIdType begin, vtkIdType end) {
+      run.FitCreases(normal, begin, end);
+      if (distributed)
+      {
+        run.FromOwners(run.Flat.data(), 1); // the halo's one-plane flags, which FitInView reads
+      }
+      if (this->Borders)
+      {
+        run.FindBorders(BorderNeighbors, border.data(), outward.data(), begin, end);
+      }
+    },
+    [&](vtkIdType begin, vtkIdType end) {
+      run.FitInView(normal, begin, end);
+      if (this->MultiScale)
+      {
+        run.ChooseScales(normal, std::min(SmallestScale, this->NumberOfNeighbors), detail.data(),
+          begin, end);
+      }
+      run.ChooseModels(gains->GetPointer(0), angles->GetPointer(0), begin, end);
+      if (distributed)
+      {
+        run.ShareModels();
+      }
+      run.MarkVoters(this->MinimumAngle, begin, end);
+    },
+    [&](vtkIdType begin, vtkIdType end) {
+      run.CastVotes(this->BandWidth, vote, begin, end);
+      if (widen && !run.Whole)
+      {
+        run.MarkNearBorders(BorderNeighbors, this->BandWidth, border.data(), begin, end);
+      }
+    },
+  };
+  if (!run.Stream(neighborhoods, this, 0.2, 0.8, passes))
   {
-    run.ChooseScales(normal, std::min(SmallestScale, this->NumberOfNeighbors), detail.data());
+    return finish();
   }
-  run.ChooseModels(gains->GetPointer(0), angles->GetPointer(0));
-  if (distributed)
-  {
-    run.ShareModels();
-  }
-  this->UpdateProgress(0.8);
+  std::vector<int32_t>().swap(run.Links);
+  std::vector<unsigned char>().swap(run.Flat);
+  std::vector<unsigned char>().swap(run.Voter);
 
   this->BeginStage("vote");
-  run.CastVotes(this->MinimumAngle, this->BandWidth, vote);
   // A halo point's vote counts fits beyond the piece: its owner's (exact) replaces it.
   this->ShareHaloValues(vote, 1, HALO_FROM_OWNER);
   this->ApplyThreshold(vote, ids, nullptr, nullptr, m);
@@ -2013,6 +2434,7 @@ int vtkCreaseVotingFeatures::RequestData(
     }
   }
   this->GrowThresholdUsed = this->GrowThreshold + this->GlobalUpperMedian(values);
+  std::vector<double>().swap(values);
   if (this->GrowThresholdUsed < this->ThresholdUsed)
   {
     // Distributed: each process grows from its own points, then the pieces exchange the halo's
@@ -2035,11 +2457,18 @@ int vtkCreaseVotingFeatures::RequestData(
   this->ShareHaloValues(m, 1, HALO_FROM_OWNER);
 
   this->BeginStage("borders");
-  std::vector<unsigned char> border(static_cast<size_t>(n), 0);
-  std::vector<float> outward(3 * static_cast<size_t>(n), 0.0f);
+  // The k nearest of the points the last stages read them for: the feature points, the border
+  // points (the short borders read their BorderNeighbors / 2 nearest) and those near them.
+  if (!run.LoadRows(neighborhoods, [&](vtkIdType r) {
+        const vtkIdType id = ids[r];
+        return m[id] || border[id] || run.NearBorder[id];
+      }))
+  {
+    return finish();
+  }
   if (this->Borders)
   {
-    run.FindBorders(BorderNeighbors, border.data(), outward.data());
+    run.DropShortBorders(BorderNeighbors / 2, border.data());
     this->ShareHaloValues(border.data(), 1, HALO_FROM_OWNER);
     this->ShareHaloValues(outward.data(), 3, HALO_FROM_OWNER);
     if (!this->ThinFeatures)
