@@ -1014,6 +1014,9 @@ struct CreaseRun
   // join it, as the crease band does. Only NearBorder points can (DropShortBorders() only takes
   // border points away).
   void WidenBorders(int kb, double bandWidth, unsigned char* border) const;
+  // Whether one of row r's kb nearest on its sheet is a border point within sqrt(band2).
+  bool BorderWithin(vtkIdType r, int kb, double band2, const unsigned char* border,
+    int32_t* buffer) const;
   // FeatureType of the mask's points; minAngle as for the vote, kb as for the borders.
   void ClassifyFeatures(const unsigned char* mask, const unsigned char* border,
     const float* outward, double minAngle, int kb, unsigned char* type) const;
@@ -1937,34 +1940,41 @@ void CreaseRun::DropShortBorders(int shortest, unsigned char* border) const
   }
 }
 
+bool CreaseRun::BorderWithin(vtkIdType r, int kb, double band2, const unsigned char* border,
+  int32_t* buffer) const
+{
+  const int32_t* row = this->Row(r, buffer, kb);
+  const int length = featurepoints::RowLength(row, std::min(kb, this->K));
+  const uint64_t* sheet = this->Sheet(r);
+  double x[3], y[3];
+  this->Reader.Get(this->Ids[r], x);
+  for (int j = 0; j < length; ++j)
+  {
+    if (!border[row[j]] || !Reached(sheet, j + 1))
+    {
+      continue;
+    }
+    this->Reader.Get(row[j], y);
+    if (vtkMath::Distance2BetweenPoints(x, y) <= band2)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 void CreaseRun::MarkNearBorders(
   int kb, double bandWidth, const unsigned char* border, vtkIdType first, vtkIdType last)
 {
   const double band2 = bandWidth * this->D * bandWidth * this->D;
   vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType end) {
-    double x[3], y[3];
     std::vector<int32_t> buffer(static_cast<size_t>(this->K));
     for (vtkIdType i = begin; i < end; ++i)
     {
       const vtkIdType r = this->Order[i];
-      const vtkIdType id = this->Ids[r];
-      const int32_t* row = this->Row(r, buffer.data(), kb);
-      const int length = featurepoints::RowLength(row, std::min(kb, this->K));
-      const uint64_t* sheet = this->Sheet(r);
-      this->Reader.Get(id, x);
-      for (int j = 0; j < length; ++j)
+      if (this->BorderWithin(r, kb, band2, border, buffer.data()))
       {
-        if (!border[row[j]] || !Reached(sheet, j + 1))
-        {
-          continue;
-        }
-        this->Reader.Get(row[j], y);
-        const double v[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
-        if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= band2)
-        {
-          this->NearBorder[id] = 1;
-          break;
-        }
+        this->NearBorder[this->Ids[r]] = 1;
       }
     }
   });
@@ -1975,7 +1985,6 @@ void CreaseRun::WidenBorders(int kb, double bandWidth, unsigned char* border) co
   const double band2 = bandWidth * this->D * bandWidth * this->D;
   std::vector<unsigned char> near(static_cast<size_t>(this->N), 0);
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
-    double x[3], y[3];
     std::vector<int32_t> buffer(static_cast<size_t>(this->K));
     for (vtkIdType r = begin; r < end; ++r)
     {
@@ -1984,24 +1993,7 @@ void CreaseRun::WidenBorders(int kb, double bandWidth, unsigned char* border) co
       {
         continue;
       }
-      const int32_t* row = this->Row(r, buffer.data(), kb);
-      const int length = featurepoints::RowLength(row, std::min(kb, this->K));
-      const uint64_t* sheet = this->Sheet(r);
-      this->Reader.Get(id, x);
-      for (int j = 0; j < length; ++j)
-      {
-        if (!border[row[j]] || !Reached(sheet, j + 1))
-        {
-          continue;
-        }
-        this->Reader.Get(row[j], y);
-        const double v[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
-        if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= band2)
-        {
-          near[id] = 1;
-          break;
-        }
-      }
+      near[id] = this->BorderWithin(r, kb, band2, border, buffer.data()) ? 1 : 0;
     }
   });
   for (vtkIdType id : this->Ids)

@@ -127,9 +127,10 @@ double BlobMaxAreaDensity(double R)
   return R * R * r * std::sqrt(r * r + g * g);
 }
 
-// The blob's area: the integral of the area density over the sphere of directions (midpoint rule
-// in phi and theta, relative error of order 1e-5; the area only sets the nominal spacing).
-double BlobArea(double R)
+// The integral of an area density over the sphere of directions: midpoint rule in phi and theta,
+// relative error of order 1e-5 on the smooth shapes (their area only sets the nominal spacing).
+template <typename Density>
+double SphereIntegral(const Density& density)
 {
   const int nPhi = 256, nTheta = 512;
   const double dPhi = Pi / nPhi, dTheta = 2.0 * Pi / nTheta;
@@ -141,14 +142,22 @@ double BlobArea(double R)
     for (int j = 0; j < nTheta; ++j)
     {
       const double theta = (j + 0.5) * dTheta;
-      const Vec u{ std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi) };
-      double density = 0.0;
-      BlobRadius(u, R, &density);
-      ring += density;
+      ring += density(
+        Vec{ std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi) });
     }
     sum += ring * std::sin(phi);
   }
   return sum * dPhi * dTheta;
+}
+
+// The blob's area.
+double BlobArea(double R)
+{
+  return SphereIntegral([R](const Vec& u) {
+    double density = 0.0;
+    BlobRadius(u, R, &density);
+    return density;
+  });
 }
 
 // The ellipsoid with semi-axes e = (a, b, c) is the image of the unit sphere under
@@ -160,26 +169,10 @@ double EllipsoidAreaDensity(const Vec& u, const Vec& e)
   return e.X * e.Y * e.Z * Norm(g);
 }
 
-// The ellipsoid's area: the integral of its area density over the sphere of directions (midpoint
-// rule in phi and theta, as BlobArea; the area only sets the nominal spacing).
+// The ellipsoid's area.
 double EllipsoidArea(const Vec& e)
 {
-  const int nPhi = 256, nTheta = 512;
-  const double dPhi = Pi / nPhi, dTheta = 2.0 * Pi / nTheta;
-  double sum = 0.0;
-  for (int i = 0; i < nPhi; ++i)
-  {
-    const double phi = (i + 0.5) * dPhi;
-    double ring = 0.0;
-    for (int j = 0; j < nTheta; ++j)
-    {
-      const double theta = (j + 0.5) * dTheta;
-      const Vec u{ std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi) };
-      ring += EllipsoidAreaDensity(u, e);
-    }
-    sum += ring * std::sin(phi);
-  }
-  return sum * dPhi * dTheta;
+  return SphereIntegral([&e](const Vec& u) { return EllipsoidAreaDensity(u, e); });
 }
 
 // A surface piece that can be sampled uniformly by area.
