@@ -795,12 +795,13 @@ bool vtkPointCloudGridLocator::FindNearestNeighbors(int k, const std::vector<vtk
   const SearchGrid& g = *this->Grid;
   // The queries in grid order (by their slot), so that neighbouring queries read the same cells
   // and their coordinates in sequence. Rows of invalid points are filled here.
+  // The queries' order: their slots ascending (the first row of each), then the rows of an id
+  // listed again, in row order. A call for most of the grid marks the slots in an array of one
+  // entry per point; a call for a block of rows sorts its (slot, row) pairs, so that it costs in
+  // the block's size, not in the cloud's.
   const int32_t k32 = k;
-  std::vector<vtkIdType> rowOfSlot(g.SortedIds.size(), -1);
-  std::vector<std::pair<int32_t, vtkIdType>> repeated; // an id listed twice
   const vtkIdType n = static_cast<vtkIdType>(g.SlotOf.size());
-  for (vtkIdType r = 0; r < rows; ++r)
-  {
+  auto slotOfRow = [&](vtkIdType r) -> int32_t {
     const int32_t slot = ids[r] >= 0 && ids[r] < n ? g.SlotOf[ids[r]] : -1;
     if (slot < 0)
     {
@@ -810,33 +811,75 @@ bool vtkPointCloudGridLocator::FindNearestNeighbors(int k, const std::vector<vtk
         (*nearestDistances)[r] = 0.0;
       }
     }
-    else if (rowOfSlot[slot] >= 0)
-    {
-      repeated.emplace_back(slot, r);
-    }
-    else
-    {
-      rowOfSlot[slot] = r;
-    }
-  }
+    return slot;
+  };
   std::vector<int32_t> slots;
   std::vector<vtkIdType> order;
+  std::vector<std::pair<int32_t, vtkIdType>> repeated; // an id listed again: (slot, row)
   slots.reserve(rows);
   order.reserve(rows);
-  for (size_t slot = 0; slot < rowOfSlot.size(); ++slot)
+  if (rows >= static_cast<vtkIdType>(g.SortedIds.size()) / 16)
   {
-    if (rowOfSlot[slot] >= 0)
+    std::vector<vtkIdType> rowOfSlot(g.SortedIds.size(), -1);
+    for (vtkIdType r = 0; r < rows; ++r)
     {
-      slots.push_back(static_cast<int32_t>(slot));
-      order.push_back(rowOfSlot[slot]);
+      const int32_t slot = slotOfRow(r);
+      if (slot >= 0)
+      {
+        if (rowOfSlot[slot] >= 0)
+        {
+          repeated.emplace_back(slot, r);
+        }
+        else
+        {
+          rowOfSlot[slot] = r;
+        }
+      }
     }
+    for (size_t slot = 0; slot < rowOfSlot.size(); ++slot)
+    {
+      if (rowOfSlot[slot] >= 0)
+      {
+        slots.push_back(static_cast<int32_t>(slot));
+        order.push_back(rowOfSlot[slot]);
+      }
+    }
+  }
+  else
+  {
+    std::vector<std::pair<int32_t, vtkIdType>> listed; // (slot, row)
+    listed.reserve(static_cast<size_t>(rows));
+    for (vtkIdType r = 0; r < rows; ++r)
+    {
+      const int32_t slot = slotOfRow(r);
+      if (slot >= 0)
+      {
+        listed.emplace_back(slot, r);
+      }
+    }
+    std::sort(listed.begin(), listed.end());
+    for (size_t q = 0; q < listed.size(); ++q)
+    {
+      if (q > 0 && listed[q].first == listed[q - 1].first)
+      {
+        repeated.push_back(listed[q]);
+      }
+      else
+      {
+        slots.push_back(listed[q].first);
+        order.push_back(listed[q].second);
+      }
+    }
+    std::sort(repeated.begin(), repeated.end(),
+      [](const std::pair<int32_t, vtkIdType>& a, const std::pair<int32_t, vtkIdType>& b) {
+        return a.second < b.second;
+      });
   }
   for (const auto& extra : repeated)
   {
     slots.push_back(extra.first);
     order.push_back(extra.second);
   }
-  std::vector<vtkIdType>().swap(rowOfSlot);
   const vtkIdType queries = static_cast<vtkIdType>(slots.size());
 
   GridNeighborsWorker worker{ { &g, k }, slots.data(), order.data(), table.data(),
