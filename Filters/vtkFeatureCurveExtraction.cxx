@@ -52,6 +52,7 @@ constexpr double SideBySideWidths = 4.0;
 // the middle one; a trace's direction further off that plane's normal than AcrossNormals crosses
 // the crease's faces instead of following it.
 constexpr double NormalPlaneRatio = 0.2;
+constexpr double RidgeRadius = 2.0; // s: a crease point's score against those this close
 const double AcrossNormals = std::cos(vtkMath::RadiansFromDegrees(30.0));
 const double CornerTurn = std::cos(vtkMath::RadiansFromDegrees(45.0)); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
@@ -308,6 +309,8 @@ public:
   // Reads the cloud: all valid points, the feature points and the trace points among them.
   void SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray* types,
     vtkDataArray* normals, vtkDataArray* scores, double threshold);
+  // Only the ridges of the score where the trace points are no line (a strip over close creases).
+  void KeepRidges();
   // Line-likeness of each trace point's neighbourhood, and the seeding order.
   void OrderSeeds();
   // Stage 1: traces from every uncovered seed.
@@ -342,6 +345,7 @@ public:
   std::vector<unsigned char> Type;  // FeatureType of the valid points (CONVEX when unknown)
   std::vector<unsigned char> Feature; // mask of the valid points
   std::vector<unsigned char> Supported; // per trace point: voted for, or on a border
+  std::vector<double> Scores; // per feature point: the detector's score (KeepRidges)
   std::vector<V3> TracePoints;
   std::vector<vtkIdType> TraceIndex; // index in Points of each trace point
   PointSearch AllSearch, TraceSearch;
@@ -441,6 +445,7 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
       // Without a score, every feature point supports a curve.
       const double score = scores ? scores->GetTuple1(i) : threshold;
       this->Supported.push_back(type == BORDER || !(score < SupportShare * threshold));
+      this->Scores.push_back(score);
     }
     this->Points.push_back(x);
     this->PointIds.push_back(i);
@@ -450,6 +455,10 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
   }
   this->AllSearch.Build(this->Points);
   this->TraceSearch.Build(this->TracePoints);
+  if (scores)
+  {
+    this->KeepRidges();
+  }
   this->Covered.assign(this->TracePoints.size(), 0);
 }
 
@@ -457,6 +466,57 @@ LineFit CurveRun::FitAt(const V3& x, std::vector<vtkIdType>& ids) const
 {
   this->TraceSearch.Within(x, this->R, ids);
   return FitLine(this->TracePoints, ids, x);
+}
+
+void CurveRun::KeepRidges()
+{
+  // Where the trace points around a crease point are no line but the normals there show one
+  // crease direction (a strip of feature points over two or more close parallel creases; not a
+  // corner, where the normals spread in three dimensions), only the points on the ridges of the
+  // detector's score are kept: those whose score reaches the median of the crease points within
+  // RidgeRadius.
+  const vtkIdType n = static_cast<vtkIdType>(this->TracePoints.size());
+  std::vector<vtkIdType> ids;
+  std::vector<double> around;
+  std::vector<V3> points;
+  std::vector<vtkIdType> index;
+  std::vector<unsigned char> supported;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const unsigned char type = this->Type[this->TraceIndex[i]];
+    bool keep = true;
+    if (type == CONVEX || type == CONCAVE)
+    {
+      const LineFit f = this->FitAt(this->TracePoints[i], ids);
+      V3 c;
+      if (f.Count >= MinFitPoints && f.Flatness > MaxFlatness &&
+        this->NormalsCrease(this->TracePoints[i], c))
+      {
+        this->TraceSearch.Within(this->TracePoints[i], RidgeRadius * this->S, ids);
+        around.clear();
+        for (vtkIdType j : ids)
+        {
+          if (this->Type[this->TraceIndex[j]] != BORDER)
+          {
+            around.push_back(this->Scores[j]);
+          }
+        }
+        const size_t middle = around.size() / 2;
+        std::nth_element(around.begin(), around.begin() + middle, around.end());
+        keep = !(this->Scores[i] < around[middle]);
+      }
+    }
+    if (keep)
+    {
+      points.push_back(this->TracePoints[i]);
+      index.push_back(this->TraceIndex[i]);
+      supported.push_back(this->Supported[i]);
+    }
+  }
+  this->TracePoints.swap(points);
+  this->TraceIndex.swap(index);
+  this->Supported.swap(supported);
+  this->TraceSearch.Build(this->TracePoints);
 }
 
 void CurveRun::OrderSeeds()

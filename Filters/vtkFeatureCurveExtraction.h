@@ -10,7 +10,10 @@
  * Every length below is in units of s, so the result does not depend on the cloud's units.
  *
  * The curves are built in stages:
- * 1. Tracing. The feature points are the trace points. From the most line-like of them not yet
+ * 1. Tracing. The feature points are the trace points, but where they form no line while the
+ *    normals around them show one crease direction (a strip of feature points over close parallel
+ *    creases), only those whose score (the input's active scalars) reaches the median of the
+ *    crease points within 2 s: the ridges of the score. From the most line-like of them not yet
  *    covered, corners (FeatureType 3) aside, a trace steps StepLength s at a time along the
  *    line fitted (PCA) to the trace points within FitRadius s (1.5 FitRadius where that fit
  *    fails), each new vertex projected across
