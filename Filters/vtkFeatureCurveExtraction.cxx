@@ -45,6 +45,15 @@ constexpr int MinFitPoints = 4;       // fewer trace points in a fit: nothing to
 constexpr double CollisionRadius = 1.5; // s: a trace joins a vertex of another this close
 constexpr double CoverRadius = 2.5;     // s: trace points this close to a vertex seed no trace
 constexpr double AssignRadius = 3.0;    // s: feature points this close to a curve get its id
+// Ends further apart across their parallel lines than this many band widths (the trace points'
+// RMS distance from their lines) lie on two curves.
+constexpr double SideBySideWidths = 4.0;
+// The normals around x span a plane (a crease's) when their least variance is below this share of
+// the middle one; a trace's direction further off that plane's normal than AcrossNormals crosses
+// the crease's faces instead of following it.
+constexpr double NormalPlaneRatio = 0.2;
+constexpr double RidgeRadius = 2.0; // s: a crease point's score against those this close
+const double AcrossNormals = std::cos(vtkMath::RadiansFromDegrees(30.0));
 const double CornerTurn = std::cos(vtkMath::RadiansFromDegrees(45.0)); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
 const double BridgeCone = std::cos(vtkMath::RadiansFromDegrees(30.0)); // an end joins what lies in this cone
@@ -129,6 +138,7 @@ struct LineFit
   V3 Direction = V3::Zero();
   int Count = 0;
   double Flatness = 1.0; // lambda2 / lambda1
+  double Width = 0.0;    // RMS distance of the points from the line
 };
 
 // PCA line through the listed points (coordinates taken relative to `origin`).
@@ -157,6 +167,7 @@ LineFit FitLine(const std::vector<V3>& points, const std::vector<vtkIdType>& ids
   fit.Centroid = origin + mean;
   fit.Direction = solver.eigenvectors().col(2).normalized();
   fit.Flatness = values[2] > 0.0 ? std::max(values[1], 0.0) / values[2] : 1.0;
+  fit.Width = std::sqrt(std::max(values[0], 0.0) + std::max(values[1], 0.0));
   return fit;
 }
 
@@ -298,6 +309,8 @@ public:
   // Reads the cloud: all valid points, the feature points and the trace points among them.
   void SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray* types,
     vtkDataArray* normals, vtkDataArray* scores, double threshold);
+  // Only the ridges of the score where the trace points are no line (a strip over close creases).
+  void KeepRidges();
   // Line-likeness of each trace point's neighbourhood, and the seeding order.
   void OrderSeeds();
   // Stage 1: traces from every uncovered seed.
@@ -325,12 +338,14 @@ public:
   std::vector<std::vector<V3>> FitCurves(const std::vector<Chain>& chains);
 
   double S, R, H, J, MinimumLength;
+  double BandWidth = 0.0; // the trace points' RMS distance from their line fits (median)
   std::vector<V3> Points;           // all valid points
   std::vector<vtkIdType> PointIds;  // their input ids
   std::vector<V3> Normals;          // zero when the input has none
   std::vector<unsigned char> Type;  // FeatureType of the valid points (CONVEX when unknown)
   std::vector<unsigned char> Feature; // mask of the valid points
   std::vector<unsigned char> Supported; // per trace point: voted for, or on a border
+  std::vector<double> Scores; // per feature point: the detector's score (KeepRidges)
   std::vector<V3> TracePoints;
   std::vector<vtkIdType> TraceIndex; // index in Points of each trace point
   PointSearch AllSearch, TraceSearch;
@@ -344,6 +359,17 @@ private:
   // The direction a free end points in, from `reach` back along its curve.
   V3 EndDirection(int end, double reach, bool skipHook) const;
   std::vector<int> Components() const;
+  // Whether direction t at x runs along the crease that the normals of the points around x
+  // show (true where they show none: one face, or a corner).
+  bool AlongNormals(const V3& x, const V3& t) const;
+  // Whether most of the trace points `ids` are border points.
+  bool MostlyBorder(const std::vector<vtkIdType>& ids) const;
+  // The crease direction c that the normals of the points around x show; false where they show
+  // none.
+  bool NormalsCrease(const V3& x, V3& c) const;
+  // Whether two ends (at xa, xb, pointing along da, db) lie on two neighbouring curves: their
+  // lines run side by side further apart than the band's width.
+  bool SideBySide(const V3& xa, const V3& da, const V3& xb, const V3& db) const;
   V3 FitSection(const V3& x, const V3& t) const;
   // The slab of all points about x across the curve's tangent t, and the frame across it.
   void Section(const V3& x, const V3& t, double halfLength, std::vector<vtkIdType>& ids, V3& e1,
@@ -419,6 +445,7 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
       // Without a score, every feature point supports a curve.
       const double score = scores ? scores->GetTuple1(i) : threshold;
       this->Supported.push_back(type == BORDER || !(score < SupportShare * threshold));
+      this->Scores.push_back(score);
     }
     this->Points.push_back(x);
     this->PointIds.push_back(i);
@@ -428,6 +455,10 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
   }
   this->AllSearch.Build(this->Points);
   this->TraceSearch.Build(this->TracePoints);
+  if (scores)
+  {
+    this->KeepRidges();
+  }
   this->Covered.assign(this->TracePoints.size(), 0);
 }
 
@@ -437,10 +468,62 @@ LineFit CurveRun::FitAt(const V3& x, std::vector<vtkIdType>& ids) const
   return FitLine(this->TracePoints, ids, x);
 }
 
+void CurveRun::KeepRidges()
+{
+  // Where the trace points around a crease point are no line but the normals there show one
+  // crease direction (a strip of feature points over two or more close parallel creases; not a
+  // corner, where the normals spread in three dimensions), only the points on the ridges of the
+  // detector's score are kept: those whose score reaches the median of the crease points within
+  // RidgeRadius.
+  const vtkIdType n = static_cast<vtkIdType>(this->TracePoints.size());
+  std::vector<vtkIdType> ids;
+  std::vector<double> around;
+  std::vector<V3> points;
+  std::vector<vtkIdType> index;
+  std::vector<unsigned char> supported;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const unsigned char type = this->Type[this->TraceIndex[i]];
+    bool keep = true;
+    if (type == CONVEX || type == CONCAVE)
+    {
+      const LineFit f = this->FitAt(this->TracePoints[i], ids);
+      V3 c;
+      if (f.Count >= MinFitPoints && f.Flatness > MaxFlatness &&
+        this->NormalsCrease(this->TracePoints[i], c))
+      {
+        this->TraceSearch.Within(this->TracePoints[i], RidgeRadius * this->S, ids);
+        around.clear();
+        for (vtkIdType j : ids)
+        {
+          if (this->Type[this->TraceIndex[j]] != BORDER)
+          {
+            around.push_back(this->Scores[j]);
+          }
+        }
+        const size_t middle = around.size() / 2;
+        std::nth_element(around.begin(), around.begin() + middle, around.end());
+        keep = !(this->Scores[i] < around[middle]);
+      }
+    }
+    if (keep)
+    {
+      points.push_back(this->TracePoints[i]);
+      index.push_back(this->TraceIndex[i]);
+      supported.push_back(this->Supported[i]);
+    }
+  }
+  this->TracePoints.swap(points);
+  this->TraceIndex.swap(index);
+  this->Supported.swap(supported);
+  this->TraceSearch.Build(this->TracePoints);
+}
+
 void CurveRun::OrderSeeds()
 {
   const vtkIdType n = static_cast<vtkIdType>(this->TracePoints.size());
   std::vector<double> flatness(n, 1.0);
+  std::vector<double> widths;
   std::vector<vtkIdType> ids;
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -448,7 +531,18 @@ void CurveRun::OrderSeeds()
     if (f.Count >= MinFitPoints)
     {
       flatness[i] = f.Flatness;
+      if (f.Flatness <= MaxFlatness)
+      {
+        widths.push_back(f.Width);
+      }
     }
+  }
+  // The band's width: the trace points' RMS distance from their line, over the line-like fits.
+  if (!widths.empty())
+  {
+    const size_t middle = widths.size() / 2;
+    std::nth_element(widths.begin(), widths.begin() + middle, widths.end());
+    this->BandWidth = widths[middle];
   }
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -493,7 +587,9 @@ void CurveRun::TraceFrom(vtkIdType seed, int trace)
     x = ProjectOnLine(x, f);
     f = this->FitAt(x, ids);
   }
-  if (f.Count < MinFitPoints || f.Flatness > MaxFlatness)
+  // A seed among stray feature points beside a crease would trace across it.
+  if (f.Count < MinFitPoints || f.Flatness > MaxFlatness ||
+    (!this->MostlyBorder(ids) && !this->AlongNormals(x, f.Direction)))
   {
     return;
   }
@@ -525,7 +621,7 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
     // The fit at y; where the trace points are sparse or noisy, again over a wider ball.
     LineFit f;
     V3 t;
-    bool found = false;
+    bool found = false, border = false;
     for (const double radius : { this->R, 1.5 * this->R })
     {
       this->TraceSearch.Within(y, radius, ids);
@@ -536,8 +632,9 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
         ahead += (this->TracePoints[i] - x).dot(d) > 0.5 * this->H;
       }
       t = f.Direction.dot(d) >= 0.0 ? f.Direction : V3(-f.Direction);
+      border = this->MostlyBorder(ids);
       if (ahead >= 2 && f.Count >= MinFitPoints && f.Flatness <= MaxFlatness &&
-        t.dot(d) >= MaxTurnPerStep)
+        t.dot(d) >= MaxTurnPerStep && (border || this->AlongNormals(y, t)))
       {
         found = true;
         break;
@@ -546,6 +643,30 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
       {
         break; // an end: nothing ahead
       }
+    }
+    // Stray feature points beside the crease (or a neighbouring crease's band) turned the fit:
+    // again on the trace points near the line along the crease that the normals show.
+    V3 c;
+    if (!found && !border && this->BandWidth > 0.0 && this->NormalsCrease(y, c) &&
+      std::abs(c.dot(d)) >= MaxTurnPerStep)
+    {
+      c = c.dot(d) >= 0.0 ? c : V3(-c);
+      this->TraceSearch.Within(y, this->R, ids);
+      std::vector<vtkIdType> tube;
+      int ahead = 0;
+      for (vtkIdType i : ids)
+      {
+        const V3 r = this->TracePoints[i] - y;
+        if ((r - r.dot(c) * c).norm() <= SideBySideWidths * this->BandWidth)
+        {
+          tube.push_back(i);
+          ahead += (this->TracePoints[i] - x).dot(d) > 0.5 * this->H;
+        }
+      }
+      f = FitLine(this->TracePoints, tube, y);
+      t = f.Direction.dot(d) >= 0.0 ? f.Direction : V3(-f.Direction);
+      found = ahead >= 2 && f.Count >= MinFitPoints && f.Flatness <= MaxFlatness &&
+        t.dot(d) >= MaxTurnPerStep && std::abs(t.dot(c)) >= AcrossNormals;
     }
     if (!found)
     {
@@ -1023,6 +1144,69 @@ V3 CurveRun::EndDirection(int end, double reach, bool skipHook) const
   return d.norm() > 0.0 ? V3(d.normalized()) : V3(V3::Zero());
 }
 
+bool CurveRun::NormalsCrease(const V3& x, V3& c) const
+{
+  // Around a crease the normals lie in the plane across it: the direction in which they vary
+  // least is the crease's.
+  this->AllSearch.Within(x, this->R, this->Scratch);
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  int count = 0;
+  for (vtkIdType i : this->Scratch)
+  {
+    const V3& n = this->Normals[i];
+    if (n.squaredNorm() > 0.0)
+    {
+      m += n.normalized() * n.normalized().transpose();
+      ++count;
+    }
+  }
+  if (count < 10)
+  {
+    return false;
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m / count);
+  const V3 values = solver.eigenvalues();
+  if (!(values[1] > 0.0) || values[0] > NormalPlaneRatio * values[1])
+  {
+    return false;
+  }
+  c = solver.eigenvectors().col(0);
+  return true;
+}
+
+bool CurveRun::MostlyBorder(const std::vector<vtkIdType>& ids) const
+{
+  size_t border = 0;
+  for (vtkIdType i : ids)
+  {
+    border += this->Type[this->TraceIndex[i]] == BORDER;
+  }
+  return 2 * border > ids.size();
+}
+
+bool CurveRun::AlongNormals(const V3& x, const V3& t) const
+{
+  V3 c;
+  return !this->NormalsCrease(x, c) || std::abs(t.dot(c)) >= AcrossNormals;
+}
+
+bool CurveRun::SideBySide(const V3& xa, const V3& da, const V3& xb, const V3& db) const
+{
+  if (std::abs(da.dot(db)) < BridgeCone)
+  {
+    return false;
+  }
+  // The distance between the two lines, across their mean direction.
+  const V3 mean = da.dot(db) >= 0.0 ? V3(da + db) : V3(da - db);
+  if (!(mean.norm() > 0.0))
+  {
+    return false;
+  }
+  const V3 m = mean.normalized();
+  const V3 ab = xb - xa;
+  return (ab - ab.dot(m) * m).norm() > SideBySideWidths * this->BandWidth;
+}
+
 std::vector<int> CurveRun::Components() const
 {
   const int n = static_cast<int>(this->G.Vertices.size());
@@ -1083,6 +1267,11 @@ void CurveRun::JoinEnds()
   }
   // Pairs of ends near each other, facing each other's side, nearest first.
   const size_t m = ends.size();
+  std::vector<unsigned char> borderEnd(m, 0);
+  for (size_t a = 0; a < m; ++a)
+  {
+    borderEnd[a] = this->LocalType(this->G.Vertices[ends[a]]) == BORDER;
+  }
   struct Pair
   {
     double Distance;
@@ -1102,6 +1291,12 @@ void CurveRun::JoinEnds()
         -ab.dot(lineDirections[b]) >= BridgeCone * distance;
       if (distance > (facing ? 2.0 : 1.0) * this->J ||
         (!facing && (ab.dot(directions[a]) < 0.0 || -ab.dot(directions[b]) < 0.0)))
+      {
+        continue;
+      }
+      if (!borderEnd[a] && !borderEnd[b] &&
+        this->SideBySide(this->G.Vertices[ends[a]], lineDirections[a], this->G.Vertices[ends[b]],
+          lineDirections[b]))
       {
         continue;
       }
@@ -1234,6 +1429,15 @@ void CurveRun::JoinEnds()
       if (v == ends[a] || this->G.Degree(static_cast<int>(v)) == 0 || distance <= 0.0 ||
         to.dot(directions[a]) < BridgeCone * distance ||
         (component[v] == component[ends[a]] && componentSize[component[v]] * this->H < 4.0 * this->J))
+      {
+        continue;
+      }
+      const auto& around = this->G.Adjacent[v];
+      const V3 along = this->G.Vertices[around.front()] - this->G.Vertices[around.back()];
+      const V3 tangent = around.size() > 1 && along.norm() > 0.0
+        ? V3(along.normalized())
+        : V3((this->G.Vertices[around.front()] - this->G.Vertices[v]).normalized());
+      if (!borderEnd[a] && this->SideBySide(x, lineDirections[a], this->G.Vertices[v], tangent))
       {
         continue;
       }

@@ -10,7 +10,10 @@
  * Every length below is in units of s, so the result does not depend on the cloud's units.
  *
  * The curves are built in stages:
- * 1. Tracing. The feature points are the trace points. From the most line-like of them not yet
+ * 1. Tracing. The feature points are the trace points, but where they form no line while the
+ *    normals around them show one crease direction (a strip of feature points over close parallel
+ *    creases), only those whose score (the input's active scalars) reaches the median of the
+ *    crease points within 2 s: the ridges of the score. From the most line-like of them not yet
  *    covered, corners (FeatureType 3) aside, a trace steps StepLength s at a time along the
  *    line fitted (PCA) to the trace points within FitRadius s (1.5 FitRadius where that fit
  *    fails), each new vertex projected across
@@ -18,7 +21,12 @@
  *    points themselves. A trace stops where no trace point lies ahead (an end), where the fit turns
  *    by more than 35 degrees in a step or stops being line-like (a corner, a junction), or where it
  *    comes within 1.5 s of a vertex of another trace (it joins it there: a junction, or the
- *    continuation of the same curve).
+ *    continuation of the same curve). Where the normals of all points within FitRadius show a
+ *    crease (they vary in one plane: least along its normal, the crease's direction), a crease
+ *    trace's fit must run within 30 degrees of that direction, and its seed too; where it does
+ *    not (stray feature points beside the crease, or the band of a parallel crease nearby), the
+ *    line is fitted again on the trace points within 4 band widths of the crease's line through
+ *    the step (the band width: the median RMS distance of the trace points from their line fits).
  * 2. Joining. Ends within JoinDistance s of each other meet at the point nearest to the lines they
  *    point along (a corner, where three or more curves meet, or two borders at an angle), nearest
  *    pairs first and only where all the ends of a junction lie within JoinDistance of each other
@@ -26,7 +34,9 @@
  *    other are bridged (from up to twice that distance when they face each other within 30
  *    degrees, each end's direction taken over 2 FitRadius s back along its curve, the last
  *    quarter of that aside: a trace's last vertices hook towards the side of the band where its
- *    points run out); an end pointing at another curve within JoinDistance joins it.
+ *    points run out); an end pointing at another curve within JoinDistance joins it. Crease ends
+ *    whose lines run side by side (within 30 degrees) further apart than 4 band widths lie on
+ *    two parallel creases: they are neither joined nor bridged here.
  *    Curves shorter than JoinDistance between two junctions (a corner traced round as well as
  *    along its edges) collapse into one corner.
  *    After cleaning (stage 3), the ends it freed are joined again in the same way, and gaps along
