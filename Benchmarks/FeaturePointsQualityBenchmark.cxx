@@ -221,15 +221,15 @@ struct CaughtErrors
     this->Command->SetClientData(&this->Message);
     this->Command->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
       std::string text = callData ? static_cast<const char*>(callData) : "";
-      // VTK's text ends with a blank line and starts with the class and the source file.
+      // VTK's text: "ERROR: In FILE, line N\nCLASS (ADDRESS): MESSAGE\n\n"; keep MESSAGE.
       while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
       {
         text.pop_back();
       }
-      const size_t colon = text.rfind(": ");
+      const size_t colon = text.find("): ");
       if (colon != std::string::npos)
       {
-        text = text.substr(colon + 2);
+        text = text.substr(colon + 3);
       }
       auto message = static_cast<std::string*>(clientData);
       if (message->empty())
@@ -471,15 +471,27 @@ void RunMesh(const std::string& name, vtkPolyData* mesh, const std::vector<vtkId
         named(found, "CreaseType");
         named(thinMask, "ThinMask");
         std::string stem = name;
-        std::replace_if(stem.begin(), stem.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_'; }, '_');
+        std::replace_if(stem.begin(), stem.end(),
+          [](char c) { return !std::isalnum(static_cast<unsigned char>(c)) && c != '-'; }, '_');
         const std::string file = (std::filesystem::path(saveDir) /
-          (stem + "_" + std::to_string(count) + "_sigma" + std::to_string(sigma).substr(0, 4) + ".vtp"))
+          (stem + "_" + std::to_string(count) + "_sigma" + std::to_string(sigma).substr(0, 4)))
                                    .string();
         vtkNew<vtkXMLPolyDataWriter> writer;
-        writer->SetFileName(file.c_str());
+        writer->SetFileName((file + ".vtp").c_str());
         writer->SetInputData(saved);
         writer->SetDataModeToAppended();
         writer->Write();
+        // The feature edges (FeatureEdgeId's cells), once per mesh.
+        const std::string edgesFile =
+          (std::filesystem::path(saveDir) / (stem + "_edges.vtp")).string();
+        if (count == counts.front() && sigma == sigmas.front())
+        {
+          vtkNew<vtkXMLPolyDataWriter> edgesWriter;
+          edgesWriter->SetFileName(edgesFile.c_str());
+          edgesWriter->SetInputData(edges);
+          edgesWriter->SetDataModeToAppended();
+          edgesWriter->Write();
+        }
       }
     }
   }

@@ -6,6 +6,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
@@ -117,6 +118,7 @@ struct DistanceFunctor
   vtkStaticPointLocator* Corners; // nullptr without corners
   double PieceLength;
   std::vector<double>& Distance;
+  std::vector<vtkIdType>& NearestEdge;
   std::vector<unsigned char>& NearestType;
   std::vector<double>& CornerDistance;
   vtkSMPThreadLocalObject<vtkIdList> Found;
@@ -124,8 +126,8 @@ struct DistanceFunctor
   DistanceFunctor(const std::vector<Vec>& clean, const std::vector<Vec>& meshPoints,
     const std::vector<FeatureEdge>& edges, const std::vector<vtkIdType>& pieceEdge,
     vtkStaticPointLocator* pieces, vtkStaticPointLocator* corners, double pieceLength,
-    std::vector<double>& distance, std::vector<unsigned char>& nearestType,
-    std::vector<double>& cornerDistance)
+    std::vector<double>& distance, std::vector<vtkIdType>& nearestEdge,
+    std::vector<unsigned char>& nearestType, std::vector<double>& cornerDistance)
     : Clean(clean)
     , MeshPoints(meshPoints)
     , Edges(edges)
@@ -134,6 +136,7 @@ struct DistanceFunctor
     , Corners(corners)
     , PieceLength(pieceLength)
     , Distance(distance)
+    , NearestEdge(nearestEdge)
     , NearestType(nearestType)
     , CornerDistance(cornerDistance)
   {
@@ -154,18 +157,24 @@ struct DistanceFunctor
       const double dm = std::sqrt(vtkMath::Distance2BetweenPoints(x, m));
       this->Pieces->FindPointsWithinRadius(dm + 0.5 * this->PieceLength * (1.0 + 1e-9), x, found);
       double best = VTK_DOUBLE_MAX;
-      unsigned char type = vtkMeshFeatureSampler::NOT_FEATURE;
+      vtkIdType bestEdge = -1;
       for (vtkIdType k = 0; k < found->GetNumberOfIds(); ++k)
       {
-        const FeatureEdge& e = this->Edges[this->PieceEdge[found->GetId(k)]];
+        const vtkIdType edge = this->PieceEdge[found->GetId(k)];
+        const FeatureEdge& e = this->Edges[edge];
         const double d = SegmentDistance(p, this->MeshPoints[e.A], this->MeshPoints[e.B]);
-        if (d < best)
+        // Ties (a shared end point) go to the smaller edge id, whatever the order found.
+        if (d < best || (d == best && edge < bestEdge))
         {
           best = d;
-          type = e.Type;
+          bestEdge = edge;
         }
       }
+      const unsigned char type = bestEdge >= 0
+        ? this->Edges[bestEdge].Type
+        : static_cast<unsigned char>(vtkMeshFeatureSampler::NOT_FEATURE);
       this->Distance[i] = best;
+      this->NearestEdge[i] = bestEdge;
       this->NearestType[i] = type;
       if (this->Corners)
       {
@@ -538,6 +547,7 @@ int vtkMeshFeatureSampler::RequestData(
 
   // Distances to the feature edges and the corners, exact (see DistanceFunctor).
   std::vector<double> distance(static_cast<size_t>(n), VTK_FLOAT_MAX);
+  std::vector<vtkIdType> nearestEdge(static_cast<size_t>(n), -1);
   std::vector<unsigned char> nearestType(static_cast<size_t>(n), NOT_FEATURE);
   std::vector<double> cornerDistance(static_cast<size_t>(n), VTK_FLOAT_MAX);
   if (!edges.empty())
@@ -551,7 +561,8 @@ int vtkMeshFeatureSampler::RequestData(
       const Vec& a = meshPoints[edges[e].A];
       const Vec d = Sub(meshPoints[edges[e].B], a);
       const double length = std::sqrt(Dot(d, d));
-      const vtkIdType pieces = std::max<vtkIdType>(1, static_cast<vtkIdType>(std::ceil(length / pieceLength)));
+      const vtkIdType pieces =
+        std::max<vtkIdType>(1, static_cast<vtkIdType>(std::ceil(length / pieceLength)));
       for (vtkIdType k = 0; k < pieces; ++k)
       {
         const double f = (static_cast<double>(k) + 0.5) / static_cast<double>(pieces);
@@ -579,8 +590,8 @@ int vtkMeshFeatureSampler::RequestData(
       cornerLocator->BuildLocator();
     }
     DistanceFunctor functor(clean, meshPoints, edges, pieceEdge, pieceLocator,
-      corners.empty() ? nullptr : cornerLocator.GetPointer(), pieceLength, distance, nearestType,
-      cornerDistance);
+      corners.empty() ? nullptr : cornerLocator.GetPointer(), pieceLength, distance, nearestEdge,
+      nearestType, cornerDistance);
     vtkSMPTools::For(0, n, functor);
   }
 
@@ -600,6 +611,9 @@ int vtkMeshFeatureSampler::RequestData(
   vtkNew<vtkDoubleArray> featureDistance;
   featureDistance->SetName("FeatureDistance");
   featureDistance->SetNumberOfValues(n);
+  vtkNew<vtkIdTypeArray> edgeIds;
+  edgeIds->SetName("FeatureEdgeId");
+  edgeIds->SetNumberOfValues(n);
   vtkNew<vtkUnsignedCharArray> truth;
   truth->SetName("GroundTruth");
   truth->SetNumberOfValues(n);
@@ -610,6 +624,7 @@ int vtkMeshFeatureSampler::RequestData(
   {
     const bool positive = distance[i] <= 2.0 * s;
     featureDistance->SetValue(i, distance[i]);
+    edgeIds->SetValue(i, nearestEdge[i]);
     truth->SetValue(i, positive ? 1 : 0);
     type->SetValue(i,
       positive ? (cornerDistance[i] <= 2.0 * s ? static_cast<unsigned char>(CORNER) : nearestType[i])
@@ -618,6 +633,7 @@ int vtkMeshFeatureSampler::RequestData(
   output->SetPoints(points);
   output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(n));
   output->GetPointData()->AddArray(featureDistance);
+  output->GetPointData()->AddArray(edgeIds);
   output->GetPointData()->AddArray(truth);
   output->GetPointData()->AddArray(type);
   output->GetPointData()->SetActiveScalars("TrueFeatureType");

@@ -32,6 +32,8 @@
  * arrays
  * - `FeatureDistance` (double): the clean (pre-noise) point's Euclidean distance to the nearest
  *   feature edge (exact); VTK_FLOAT_MAX when the mesh has no feature edge.
+ * - `FeatureEdgeId` (vtkIdType): that edge's cell id in output port 1 (the smaller id on a tie);
+ *   -1 when the mesh has no feature edge.
  * - `GroundTruth` (uint8): 1 for the positives of docs/evaluation.md, FeatureDistance <= 2 s.
  * - `TrueFeatureType` (uint8, the codes of vtkCreaseVotingFeatures' FeatureType): 0 where
  *   GroundTruth is 0; else 3 (corner) within 2 s of a corner (the clean position), else the type of

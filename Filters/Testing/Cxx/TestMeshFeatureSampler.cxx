@@ -180,6 +180,9 @@ int TestMeshFeatureSampler(int, char*[])
     ++counts[std::min(4, std::max(0, t))];
   }
   SAMPLER_CHECK(worst < 1e-12, "cube: FeatureDistance off by %g", worst);
+  vtkDataArray* edgeIds = Array(cloud, "FeatureEdgeId");
+  SAMPLER_CHECK(edgeIds && edgeIds->GetRange()[0] == 0.0 && edgeIds->GetRange()[1] == 11.0,
+    "cube: FeatureEdgeId missing or not 0-11");
   SAMPLER_CHECK(typeErrors == 0, "cube: %d points with the wrong type or ground truth", typeErrors);
   SAMPLER_CHECK(counts[1] > 800 && counts[3] > 10 && counts[2] == 0 && counts[4] == 0,
     "cube: type counts none %d convex %d concave %d corner %d border %d", counts[0], counts[1],
