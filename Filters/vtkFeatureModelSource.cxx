@@ -1,4 +1,5 @@
 #include "vtkFeatureModelSource.h"
+#include "vtkFeaturePointsRandom.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -55,24 +56,7 @@ Vec Cross(const Vec& a, const Vec& b)
   return { a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X };
 }
 
-// Random numbers defined bit for bit by the standard (mt19937_64) and by this file (the
-// conversions), so that a seed gives the same cloud with every standard library.
-struct Random
-{
-  std::mt19937_64 Engine;
-  explicit Random(unsigned int seed)
-    : Engine(seed)
-  {
-  }
-  double Uniform() { return static_cast<double>(this->Engine() >> 11) * (1.0 / 9007199254740992.0); }
-  double Gaussian()
-  {
-    // Box-Muller; 1 - u keeps the logarithm finite.
-    const double u = 1.0 - this->Uniform();
-    const double v = this->Uniform();
-    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * Pi * v);
-  }
-};
+using featurepoints::Random;
 
 Vec UniformDirection(Random& rng)
 {

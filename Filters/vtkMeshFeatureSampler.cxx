@@ -1,4 +1,5 @@
 #include "vtkMeshFeatureSampler.h"
+#include "vtkFeaturePointsRandom.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -53,24 +54,7 @@ Vec Cross(const Vec& a, const Vec& b)
   return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
 }
 
-// Random numbers defined bit for bit by the standard (mt19937_64) and by this file (the standard
-// distributions are not), as in vtkFeatureModelSource.
-struct Random
-{
-  std::mt19937_64 Engine;
-  explicit Random(unsigned int seed)
-    : Engine(seed)
-  {
-  }
-  double Uniform() { return static_cast<double>(this->Engine() >> 11) * (1.0 / 9007199254740992.0); }
-  double Gaussian()
-  {
-    // Box-Muller; 1 - u keeps the logarithm finite.
-    const double u = 1.0 - this->Uniform();
-    const double v = this->Uniform();
-    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * vtkMath::Pi() * v);
-  }
-};
+using featurepoints::Random;
 
 // The distance from p to the segment [a, b].
 double SegmentDistance(const Vec& p, const Vec& a, const Vec& b)
