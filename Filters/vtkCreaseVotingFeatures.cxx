@@ -176,16 +176,21 @@ bool FitPlane(const Moments& m, Eigen::Vector3d& centroid, Eigen::Vector3d& norm
   return true;
 }
 
-// Residual of the least-squares quadric height field h = a u^2 + b uv + c v^2 + d u + e v + f
-// over the plane (c, n) (u, v along the plane, h along n): what a smooth surface explains. A
-// crease is a bend that no smooth surface of the neighbourhood's size explains; a cylinder or a
-// sphere is explained by it however strongly curved. Falls back on `planeRss` when singular.
+// Residual of the least-squares polynomial height field over the plane (c, n) (u, v along the
+// plane, h along n): Terms = 6, the quadric h = a u^2 + b uv + c v^2 + d u + e v + f, what a
+// smooth surface explains; Terms = 10 adds the cubic terms u^3, u^2 v, u v^2, v^3 (a free-form
+// face whose curvature changes across the neighbourhood). A crease is a bend that no smooth
+// surface of the neighbourhood's size explains; a cylinder or a sphere is explained by the quadric
+// however strongly curved. Falls back on `planeRss` when singular.
 // `across`: each height residual divided by sqrt(1 + |grad h|^2), the first-order distance to the
-// quadric across it (Sampson's), as the planes' residuals are measured; the height alone counts
+// surface across it (Sampson's), as the planes' residuals are measured; the height alone counts
 // the noise of a steep patch 1 + slope^2 times (see Explains and the gain).
-double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& c,
+template <int Terms = 6>
+double FitHeights(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& c,
   const Eigen::Vector3d& n, double planeRss, double* bend = nullptr, bool across = true)
 {
+  static_assert(Terms == 6 || Terms == 10, "a quadric or a cubic height field");
+  using Row = Eigen::Matrix<double, Terms, 1>;
   if (bend)
   {
     *bend = 0.0;
@@ -206,52 +211,68 @@ double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
     const Eigen::Vector3d w = (q - c) / radius;
     const double u = w.dot(e1), v = w.dot(e2);
     h = w.dot(n);
-    Eigen::Matrix<double, 6, 1> a;
-    a << u * u, u * v, v * v, u, v, 1.0;
+    Row a;
+    if constexpr (Terms == 6)
+    {
+      a << u * u, u * v, v * v, u, v, 1.0;
+    }
+    else
+    {
+      a << u * u, u * v, v * v, u, v, 1.0, u * u * u, u * u * v, u * v * v, v * v * v;
+    }
     return a;
   };
   // The rows are kept for the residual's pass (this thread's scratch: no allocation per fit).
-  thread_local std::vector<Eigen::Matrix<double, 7, 1>> rows;
+  thread_local std::vector<Eigen::Matrix<double, Terms + 1, 1>> rows;
   rows.resize(p.size());
-  Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 1> ath = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix<double, Terms, Terms> ata = Eigen::Matrix<double, Terms, Terms>::Zero();
+  Row ath = Row::Zero();
   double h = 0.0;
   for (size_t j = 0; j < p.size(); ++j)
   {
-    const Eigen::Matrix<double, 6, 1> a = row(p[j], h);
+    const Row a = row(p[j], h);
     rows[j] << a, h;
     // The lower triangle of a a^T, as Eigen's rankUpdate adds it, written out to be inlined.
-    for (int c = 0; c < 6; ++c)
+    for (int c = 0; c < Terms; ++c)
     {
-      for (int l = c; l < 6; ++l)
+      for (int l = c; l < Terms; ++l)
       {
         ata(l, c) += a[c] * a[l];
       }
     }
     ath += h * a;
   }
-  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(ata.selfadjointView<Eigen::Lower>());
+  const Eigen::LDLT<Eigen::Matrix<double, Terms, Terms>> solver(
+    ata.template selfadjointView<Eigen::Lower>());
   if (solver.info() != Eigen::Success || !(solver.vectorD().minCoeff() > 1e-12 * p.size()))
   {
     return planeRss;
   }
-  const Eigen::Matrix<double, 6, 1> x = solver.solve(ath);
+  const Row x = solver.solve(ath);
   if (bend)
   {
-    // The largest principal curvature times the radius (coordinates are in radii).
+    // The largest principal curvature at the fitted point times the radius (coordinates are in
+    // radii).
     Eigen::Matrix2d hessian;
     hessian << 2.0 * x[0], x[1], x[1], 2.0 * x[2];
     *bend = hessian.eigenvalues().cwiseAbs().maxCoeff();
   }
   double rss = 0.0;
-  for (const Eigen::Matrix<double, 7, 1>& a : rows)
+  for (const Eigen::Matrix<double, Terms + 1, 1>& a : rows)
   {
-    const double r = a.head<6>().dot(x) - a[6];
+    const double r = a.template head<Terms>().dot(x) - a[Terms];
     if (across)
     {
-      // a = (u^2, uv, v^2, u, v, 1): the gradient of the fitted height at (u, v).
-      const double gu = 2.0 * x[0] * a[3] + x[1] * a[4] + x[3];
-      const double gv = x[1] * a[3] + 2.0 * x[2] * a[4] + x[4];
+      // a = (u^2, uv, v^2, u, v, 1[, u^3, u^2 v, u v^2, v^3]): the gradient of the fitted height
+      // at (u, v).
+      const double u = a[3], v = a[4];
+      double gu = 2.0 * x[0] * u + x[1] * v + x[3];
+      double gv = x[1] * u + 2.0 * x[2] * v + x[4];
+      if constexpr (Terms == 10)
+      {
+        gu += 3.0 * x[6] * u * u + 2.0 * x[7] * u * v + x[8] * v * v;
+        gv += x[7] * u * u + 2.0 * x[8] * u * v + 3.0 * x[9] * v * v;
+      }
       rss += r * r / (1.0 + gu * gu + gv * gv);
     }
     else
@@ -261,6 +282,13 @@ double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
   }
   rss *= radius * radius;
   return std::isfinite(rss) ? std::min(rss, planeRss) : planeRss;
+}
+
+// The quadric height field's residual (FitHeights<6>).
+double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& c,
+  const Eigen::Vector3d& n, double planeRss, double* bend = nullptr, bool across = true)
+{
+  return FitHeights<6>(p, c, n, planeRss, bend, across);
 }
 
 // One two-plane model of a neighbourhood: its residual and the line where its planes meet.
@@ -411,7 +439,7 @@ Hinge RefineHinge(const std::vector<Eigen::Vector3d>& p, Moments half[2], const 
 // Two-plane fit of one neighbourhood: p[0] is the point (the origin), nr the normals, variance
 // the noise variance.
 CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& nr,
-  double variance, std::vector<unsigned char>& label, std::vector<unsigned char>& next)
+  double variance, std::vector<unsigned char>& label, std::vector<unsigned char>& next, bool cubic)
 {
   CreaseFit fit;
   fit.Points = static_cast<int>(p.size());
@@ -558,6 +586,25 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
     rss2 = rss1;
   }
   StoreLine(fit.Hinge, rss2, sine, hasLine, x, t, ca, cb, nr[0]);
+  // A free-form face (a blend, a turbine blade, a car's body panel): its curvature changes across
+  // a wide neighbourhood, so that neither the quadric nor the planes explain it within the noise
+  // and the hinge gains on the quadric as on a crease. Where nothing else explains the points, a
+  // cubic height field that does (within the bound of its 10 parameters) stands for the smooth
+  // surface. Only where asked (the widest scale): a crease seen from a neighbourhood small enough
+  // to be explained by a cubic would be lost.
+  if (cubic)
+  {
+    const double crossing = fit.Crossing ? fit.Cross.RSS2 : fit.RSSQ;
+    if (std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), crossing) >
+      MisfitBound(fit.Points - 6) * variance)
+    {
+      const double rssc = FitHeights<10>(p, c1, n1, rss1);
+      if (rssc <= MisfitBound(fit.Points - 10) * variance)
+      {
+        fit.RSSQ = std::min(fit.RSSQ, rssc);
+      }
+    }
+  }
   return fit;
 }
 
@@ -1122,9 +1169,9 @@ void CreaseRun::GatherSheet(
 
 // Two-plane fit of the gathered points; where they form two parallel sheets (a thin wall), the
 // fit is redone on the fitted point's sheet.
-CreaseFit FitGathered(Scratch& s, double variance)
+CreaseFit FitGathered(Scratch& s, double variance, bool cubic)
 {
-  CreaseFit fit = FitCrease(s.P, s.N, variance, s.Label, s.Next);
+  CreaseFit fit = FitCrease(s.P, s.N, variance, s.Label, s.Next, cubic);
   if (fit.Sheet >= 0)
   {
     const unsigned char side = static_cast<unsigned char>(fit.Sheet);
@@ -1140,7 +1187,7 @@ CreaseFit FitGathered(Scratch& s, double variance)
     }
     s.P.resize(kept);
     s.N.resize(kept);
-    fit = FitCrease(s.P, s.N, variance, s.Label, s.Next);
+    fit = FitCrease(s.P, s.N, variance, s.Label, s.Next, cubic);
     fit.Sheet = -1;
   }
   return fit;
@@ -1425,7 +1472,7 @@ void CreaseRun::FitCreases(const float* normal, vtkIdType begin, vtkIdType end)
         this->Flat[this->Ids[r]] = 1;
         continue;
       }
-      fits[i - begin] = FitGathered(s, this->Variance);
+      fits[i - begin] = FitGathered(s, this->Variance, true);
     }
   });
   for (vtkIdType i = begin; i < end; ++i)
@@ -1466,7 +1513,7 @@ void CreaseRun::FitInView(const float* normal, vtkIdType begin, vtkIdType end)
       if (inView)
       {
         this->GatherSheet(r, row, this->KFit, normal, s);
-        fits[i - begin] = FitGathered(s, this->Variance);
+        fits[i - begin] = FitGathered(s, this->Variance, true);
         fitted[i - begin] = 1;
       }
     }
@@ -1521,7 +1568,7 @@ void CreaseRun::ChooseScales(
            scale = scale > smallest ? std::max(scale / 2, smallest) : 0)
       {
         this->GatherSheet(r, row, scale, normal, s);
-        fit = FitGathered(s, this->Variance);
+        fit = FitGathered(s, this->Variance, false);
         if (Explains(fit, this->Variance))
         {
           this->Fits.Edit(r) = fit;
