@@ -83,7 +83,18 @@ void KeepFirst(std::string& first, std::string& pipeline, const char* vtkMessage
   {
     if (pipeline.empty())
     {
-      pipeline = text.substr(0, std::min(dump, noOutput)) + " failed";
+      // "Algorithm vtkPolyDataReader(0x...) returned failure ...": the reader failed without a
+      // word of its own; its class, without the address, and the usual causes.
+      std::string algorithm = text.substr(0, std::min(dump, noOutput));
+      const size_t open = algorithm.find("(0x");
+      if (open != std::string::npos)
+      {
+        algorithm.erase(open, algorithm.find(')', open) + 1 - open);
+      }
+      const size_t name = algorithm.rfind(' ');
+      pipeline = "VTK's " + algorithm.substr(name == std::string::npos ? 0 : name + 1) +
+        " failed without saying why (a malformed or cut file, or counts that declare more than "
+        "the file holds or memory allows)";
     }
     return;
   }
@@ -119,6 +130,19 @@ struct Capture
 {
   std::string Message, PipelineMessage;
   bool WarningsFail = false;
+  // A writer writes a temporary file beside the target: the warnings passed on name the target.
+  std::string Temporary, Target;
+  std::string Passed(const char* text) const
+  {
+    std::string passed = text ? text : "";
+    for (size_t at = 0; !this->Temporary.empty() &&
+         (at = passed.find(this->Temporary, at)) != std::string::npos;
+         at += this->Target.size())
+    {
+      passed.replace(at, this->Temporary.size(), this->Target);
+    }
+    return passed;
+  }
   // The message to report: the first, else the executive's.
   const std::string& Text() const
   {
@@ -169,7 +193,8 @@ public:
     }
     else if (this->Previous)
     {
-      this->Previous->DisplayWarningText(text);
+      this->Previous->DisplayWarningText(
+        CurrentCapture ? CurrentCapture->Passed(text).c_str() : text);
     }
   }
   void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
@@ -671,11 +696,18 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fi
     ::setrlimit(RLIMIT_CORE, &core);
 #ifndef FEATUREPOINTS_IO_SANITIZED
     // No more address space than the machine has memory: a huge declared count fails at once.
+    // A legacy file is not compressed: what it holds takes a few times its size in memory, so
+    // its reader gets 2 GiB plus 64 times the file's size at most (a 20 KB file that declares a
+    // billion cells took all of 24 GB for a minute before failing).
     const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
     if (pages > 0 && pageSize > 0)
     {
-      const rlim_t bytes = static_cast<rlim_t>(pages) * static_cast<rlim_t>(pageSize);
-      const rlimit space = { bytes, bytes };
+      double bytes = static_cast<double>(pages) * static_cast<double>(pageSize);
+      if (extension == "vtk")
+      {
+        bytes = std::min(bytes, 2147483648.0 + 64.0 * fileSize);
+      }
+      const rlimit space = { static_cast<rlim_t>(bytes), static_cast<rlim_t>(bytes) };
       ::setrlimit(RLIMIT_AS, &space);
     }
 #endif
@@ -930,6 +962,8 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
     write = [w]() { return w->Write(); };
   }
   ScopedCapture capture(false);
+  capture.Window->Temporary = temporary;
+  capture.Window->Target = fileName;
   vtkNew<ErrorCatcher> catcher;
   catcher->First = &capture.Window->Message;
   catcher->Pipeline = &capture.Window->PipelineMessage;

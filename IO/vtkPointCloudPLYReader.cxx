@@ -537,10 +537,16 @@ bool PLYParser::ReadHeader()
     {
       uint64_t count = 0;
       const char* end = w.size() == 3 ? w[2].data() + w[2].size() : nullptr;
-      if (!end || std::from_chars(w[2].data(), end, count).ptr != end)
+      const auto parsed = end ? std::from_chars(w[2].data(), end, count) : std::from_chars_result{};
+      if (!end || parsed.ptr != end)
       {
         return bad("malformed element line (expected \"element NAME COUNT\", COUNT a "
                    "non-negative integer)");
+      }
+      if (parsed.ec == std::errc::result_out_of_range)
+      {
+        return bad("element " + quote(w[1]) + ": count " + quote(w[2]) +
+          " is beyond any file (at most 2^64 - 1)");
       }
       // Elements other than the vertices are only skipped, whatever their names.
       if (w[1] == "vertex" &&

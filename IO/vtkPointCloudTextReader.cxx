@@ -358,6 +358,12 @@ struct TextParse
       return this->Fail(vtkErrorCode::FileFormatError, number,
         "a PTS file starts with its number of points; found '" + std::string(trimmed) + "'");
     }
+    // A count beyond 2^62 would overflow the conversion; no file holds that many points anyway.
+    if (count > 4611686018427387904.0)
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, number,
+        "the PTS count line says " + std::string(trimmed) + " points: more than any file holds");
+    }
     this->DeclaredCount = static_cast<long long>(count);
     this->CountLine = number;
     return true;

@@ -8,10 +8,12 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -51,6 +53,15 @@ void AppendValue(std::string& out, vtkDataArray* array, vtkIdType tuple, int com
         Append(out, static_cast<long long>(array->GetComponent(tuple, component)));
       }
   }
+}
+
+std::string Lower(std::string text)
+{
+  for (char& c : text)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return text;
 }
 
 std::string ColumnName(std::string name, char delimiter)
@@ -128,9 +139,25 @@ void vtkPointCloudTextWriter::WriteData()
   }
   const char d = this->Delimiter;
   std::string buffer = std::string("x") + d + "y" + d + "z";
+  // Each array's name once, as the reader reads it back: "NAME:K" is component K of NAME, so a
+  // name ending in ":digits" has its colon replaced; a name already taken (the coordinates, an
+  // earlier array) gets a suffix _2, _3, ...
+  std::set<std::string> used = { "x", "y", "z" };
   for (vtkDataArray* array : arrays)
   {
-    const std::string name = ColumnName(array->GetName(), d);
+    std::string base = ColumnName(array->GetName(), d);
+    const size_t colon = base.rfind(':');
+    if (colon != std::string::npos && colon + 1 < base.size() &&
+      base.find_first_not_of("0123456789", colon + 1) == std::string::npos)
+    {
+      base[colon] = '_';
+    }
+    std::string name = base;
+    for (int suffix = 2; used.count(Lower(name)); ++suffix)
+    {
+      name = base + "_" + std::to_string(suffix);
+    }
+    used.insert(Lower(name));
     const int nc = array->GetNumberOfComponents();
     for (int k = 0; k < nc; ++k)
     {

@@ -1639,7 +1639,9 @@ private:
     this->CheckFinite(0);
   }
 
-  // Every point of the cloud (the piece that starts at point `first` of the file) is finite.
+  // Every point of the cloud (the piece that starts at point `first` of the file) is finite, and
+  // so is every value of its floating-point arrays: they are written out with the result, which
+  // holds no NaN or infinity (the text formats' reader rejects such a value the same way).
   void CheckFinite(vtkIdType first) const
   {
     const vtkIdType n = this->Cloud->GetNumberOfPoints();
@@ -1654,6 +1656,32 @@ private:
           << " (counting from 0) has a non-finite coordinate (" << x[0] << ", " << x[1] << ", "
           << x[2] << ")";
         Fail(ExitFailure, m.str());
+      }
+    }
+    vtkPointData* pd = this->Cloud->GetPointData();
+    for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* array = pd->GetArray(a);
+      if (!array || (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE))
+      {
+        continue;
+      }
+      const int k = array->GetNumberOfComponents();
+      for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+      {
+        for (int c = 0; c < k; ++c)
+        {
+          const double v = array->GetComponent(i, c);
+          if (!std::isfinite(v))
+          {
+            std::ostringstream m;
+            m << this->S.Input << ": point " << first + i << " (counting from 0): point array '"
+              << vtkPointCloudIO::MessageText(array->GetName() ? array->GetName() : "(no name)")
+              << "'" << (k > 1 ? " component " + std::to_string(c) : std::string()) << " holds "
+              << v << ", not a finite number";
+            Fail(ExitFailure, m.str());
+          }
+        }
       }
     }
   }

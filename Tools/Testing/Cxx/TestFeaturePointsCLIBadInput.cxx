@@ -11,6 +11,7 @@
 #include "LASTestFile.h"
 
 #include "vtkFeatureModelSource.h"
+#include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkPointCloudIO.h"
 #include "vtkPointData.h"
@@ -283,6 +284,68 @@ void HugeCounts()
     "property float y\nproperty float z\nend_header\n" + std::string(120, '\0'));
   ExpectFailure("PLY declaring 10^12 vertices", { Path("huge.ply"), Path("o.vtp") }, 1,
     "huge.ply");
+}
+
+// Hostile files a fuzzing run found: a NaN or an infinity in an attribute (coordinates are
+// checked by the readers), element counts past 2^64, a legacy file whose tiny body declares a
+// billion cells (took all the memory of the machine for a minute), array names that a CSV
+// file would repeat.
+void FuzzedFiles()
+{
+  const std::string body = ModelText(1, 1500, 1.0);
+  std::string binary;
+  std::istringstream in(body);
+  for (std::string line; std::getline(in, line);)
+  {
+    std::istringstream fields(line);
+    float v[4] = { 0.0f, 0.0f, 0.0f, std::numeric_limits<float>::quiet_NaN() };
+    fields >> v[0] >> v[1] >> v[2];
+    binary.append(reinterpret_cast<const char*>(v), sizeof(v)); // little-endian machines
+  }
+  Spit(Path("nan-attribute.ply"),
+    "ply\nformat binary_little_endian 1.0\nelement vertex 1500\nproperty float x\n"
+    "property float y\nproperty float z\nproperty float nx\nend_header\n" + binary);
+  ExpectFailure("PLY with a NaN attribute", { Path("nan-attribute.ply"), Path("o.csv") }, 1,
+    "nan-attribute.ply: point 0 (counting from 0): point array 'nx' holds nan");
+  Spit(Path("count-2e64.ply"),
+    "ply\nformat ascii 1.0\nelement vertex 18446744073709551616\nproperty float x\n"
+    "property float y\nproperty float z\nend_header\n" + body);
+  ExpectFailure("PLY count past 2^64", { Path("count-2e64.ply"), Path("o.vtp") }, 1,
+    "count '18446744073709551616' is beyond any file");
+  Spit(Path("count-2e63.pts"), "9223372036854775808\n" + body);
+  ExpectFailure("PTS count past 2^63", { Path("count-2e63.pts"), Path("o.vtp") }, 1,
+    "count-2e63.pts:1: the PTS count line says 9223372036854775808 points");
+  Spit(Path("billion-cells.vtk"),
+    "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 1500 float\n" + body +
+      "VERTICES 1000000000 2000000000\n1 0\n");
+  ExpectFailure("legacy VTK declaring 10^9 cells", { Path("billion-cells.vtk"), Path("o.vtp") }, 1,
+    "billion-cells.vtk: cannot read: VTK's vtkPolyDataReader failed without saying why", 10.0);
+  // Array names a CSV header would repeat or read as components: an input array named x (a CSV
+  // header with x twice), one-component arrays named "Normals:0" and "t:1" beside the output's own
+  // Normals. The output names each column once and reads back.
+  vtkNew<vtkFeatureModelSource> source;
+  source->SetNumberOfPoints(1500);
+  source->Update();
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(source->GetOutput()->GetPoints());
+  for (const char* name : { "x", "Normals:0", "t:1" })
+  {
+    vtkNew<vtkFloatArray> array;
+    array->SetName(name);
+    array->SetNumberOfTuples(cloud->GetNumberOfPoints());
+    array->FillValue(1.0f);
+    cloud->GetPointData()->AddArray(array);
+  }
+  std::string error;
+  Check(vtkPointCloudIO::Write(cloud, Path("names.vtp"), error), "names.vtp: " + error);
+  ExpectSuccess("names like columns", { Path("names.vtp"), Path("names.csv"), "--quiet" });
+  const std::string out = Slurp(Path("names.csv"));
+  const std::string header = out.substr(0, out.find('\n'));
+  Check(header.find(",x_2,") != std::string::npos && header.find(",t_1,") != std::string::npos &&
+      header.find(",Normals_0,") != std::string::npos,
+    "names like columns: CSV header " + header);
+  ExpectSuccess("names like columns, read back", { Path("names.csv"), Path("names-again.csv"),
+                                                   "--quiet" });
 }
 
 void CoincidentPoints()
@@ -705,6 +768,7 @@ int main(int argc, char* argv[])
   ::mkdir(Folder.c_str(), 0755);
   const auto start = std::chrono::steady_clock::now();
   HugeCounts();
+  FuzzedFiles();
   CoincidentPoints();
   WideFiles();
   LegacyFiles();
