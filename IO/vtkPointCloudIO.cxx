@@ -410,6 +410,38 @@ std::string vtkPointCloudIO::GetWritableExtensions()
   return Join(std::begin(WritableExtensions), std::end(WritableExtensions));
 }
 
+std::string vtkPointCloudIO::OneLine(const std::string& message)
+{
+  std::string line, word;
+  auto flush = [&]() {
+    line += word.size() > 80
+      ? word.substr(0, 64) + "... (" + std::to_string(word.size()) + " bytes)"
+      : word;
+    word.clear();
+  };
+  for (const char c : message)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (c == ' ')
+    {
+      flush();
+      line += c;
+    }
+    else if (u < 0x20 || u == 0x7f)
+    {
+      char escaped[8];
+      std::snprintf(escaped, sizeof(escaped), "\\x%02x", u);
+      word += escaped;
+    }
+    else
+    {
+      word += c;
+    }
+  }
+  flush();
+  return line;
+}
+
 std::string vtkPointCloudIO::MessageText(const char* vtkMessage)
 {
   std::string text = vtkMessage ? vtkMessage : "";
@@ -837,7 +869,12 @@ std::string vtkPointCloudIO::CreateTemporaryFile(
   const size_t slash = fileName.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "." : fileName.substr(0, slash + 1);
   const std::string base = slash == std::string::npos ? fileName : fileName.substr(slash + 1);
-  const std::string prefix = (folder == "." ? std::string("./") : folder) + "." + base + ".";
+  // ".BASE.XXXXXX" adds 8 bytes to the name: a target name within 8 bytes of the longest a
+  // folder takes (NAME_MAX, 255 here) gets a short temporary name instead.
+  const long longest = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  const bool shortName = base.size() + 8 > static_cast<size_t>(longest > 0 ? longest : 255);
+  const std::string prefix =
+    (folder == "." ? std::string("./") : folder) + (shortName ? ".featurepoints." : "." + base + ".");
   for (int attempt = 0; attempt < 100; ++attempt)
   {
     const std::string name = TemporaryName(prefix);

@@ -147,6 +147,13 @@ public:
   /** The message of a VTK error or warning event, without its "ERROR: In file, line" preamble. */
   static std::string MessageText(const char* vtkMessage);
 
+  /**
+   * A message as one readable line: control characters (a NUL or a newline inside a file's token
+   * or name) escaped as \xHH, and any word longer than 80 bytes (a 150,000-digit field) cut to its
+   * first 64 bytes and its length.
+   */
+  static std::string OneLine(const std::string& message);
+
 protected:
   vtkPointCloudIO() = default;
 

@@ -1239,9 +1239,9 @@ int vtkPointCloudPLYReader::RequestData(
   // Errors are reported here and the request still succeeds with an empty output: a failed
   // request would add the executive's own, less telling, error.
   auto fail = [this](unsigned long code, const std::string& message) {
-    this->ErrorMessage = message;
+    this->ErrorMessage = vtkPointCloudIO::OneLine(message);
     this->SetErrorCode(code);
-    vtkErrorMacro(<< message);
+    vtkErrorMacro(<< this->ErrorMessage);
     return 1;
   };
   std::string message;

@@ -582,7 +582,7 @@ int vtkPointCloudTextReader::RequestData(
       message << ":" << problem.Line;
     }
     message << ": " << problem.What;
-    this->ErrorMessage = message.str();
+    this->ErrorMessage = vtkPointCloudIO::OneLine(message.str());
     vtkErrorMacro(<< this->ErrorMessage);
     this->SetErrorCode(problem.Code);
     output->Initialize();

@@ -549,7 +549,7 @@ int Rank = 0;
 
 [[noreturn]] void Fail(int code, const std::string& message)
 {
-  std::fprintf(stderr, "featurepoints: %s\n", message.c_str());
+  std::fprintf(stderr, "featurepoints: %s\n", vtkPointCloudIO::OneLine(message).c_str());
   if (code == ExitUsage)
   {
     std::fprintf(stderr, "Try 'featurepoints --help'.\n");
