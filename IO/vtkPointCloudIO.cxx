@@ -414,7 +414,7 @@ std::string vtkPointCloudIO::OneLine(const std::string& message)
 {
   std::string line, word;
   auto flush = [&]() {
-    line += word.size() > 80
+    line += word.size() > 1024
       ? word.substr(0, 64) + "... (" + std::to_string(word.size()) + " bytes)"
       : word;
     word.clear();

@@ -149,8 +149,8 @@ public:
 
   /**
    * A message as one readable line: control characters (a NUL or a newline inside a file's token
-   * or name) escaped as \xHH, and any word longer than 80 bytes (a 150,000-digit field) cut to its
-   * first 64 bytes and its length.
+   * or name) escaped as \xHH, and any word longer than 1,024 bytes (a 150,000-digit field, never
+   * a file's path) cut to its first 64 bytes and its length.
    */
   static std::string OneLine(const std::string& message);
 
