@@ -1288,6 +1288,24 @@ void UnscaleResult(vtkPolyData* result, vtkPointSet* cloud, const Method& method
   }
 }
 
+// The first value of `array` that is NaN or infinite: its tuple i, component c and value v.
+bool FirstNonFinite(vtkDataArray* array, vtkIdType& i, int& c, double& v)
+{
+  const int k = array->GetNumberOfComponents();
+  for (i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    for (c = 0; c < k; ++c)
+    {
+      v = array->GetComponent(i, c);
+      if (!std::isfinite(v))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 // The first computed value that is NaN or infinite, as a message ("" when there is none): such a
 // value is never written.
 std::string FindNonFinite(vtkPolyData* result, vtkPointSet* cloud)
@@ -1301,21 +1319,16 @@ std::string FindNonFinite(vtkPolyData* result, vtkPointSet* cloud)
     {
       continue;
     }
-    const int k = array->GetNumberOfComponents();
-    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    vtkIdType i = 0;
+    int c = 0;
+    double v = 0.0;
+    if (FirstNonFinite(array, i, c, v))
     {
-      for (int c = 0; c < k; ++c)
-      {
-        const double v = array->GetComponent(i, c);
-        if (!std::isfinite(v))
-        {
-          std::ostringstream m;
-          m << "the method computed " << v << " for array '" << array->GetName() << "' at point "
-            << i << " (counting from 0): the cloud's coordinates are beyond what it can compute "
-            << "with";
-          return m.str();
-        }
-      }
+      std::ostringstream m;
+      m << "the method computed " << v << " for array '" << array->GetName() << "' at point "
+        << i << " (counting from 0): the cloud's coordinates are beyond what it can compute "
+        << "with";
+      return m.str();
     }
   }
   return "";
@@ -1666,22 +1679,18 @@ private:
       {
         continue;
       }
-      const int k = array->GetNumberOfComponents();
-      for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+      vtkIdType i = 0;
+      int c = 0;
+      double v = 0.0;
+      if (FirstNonFinite(array, i, c, v))
       {
-        for (int c = 0; c < k; ++c)
-        {
-          const double v = array->GetComponent(i, c);
-          if (!std::isfinite(v))
-          {
-            std::ostringstream m;
-            m << this->S.Input << ": point " << first + i << " (counting from 0): point array '"
-              << vtkPointCloudIO::MessageText(array->GetName() ? array->GetName() : "(no name)")
-              << "'" << (k > 1 ? " component " + std::to_string(c) : std::string()) << " holds "
-              << v << ", not a finite number";
-            Fail(ExitFailure, m.str());
-          }
-        }
+        std::ostringstream m;
+        m << this->S.Input << ": point " << first + i << " (counting from 0): point array '"
+          << vtkPointCloudIO::MessageText(array->GetName() ? array->GetName() : "(no name)") << "'"
+          << (array->GetNumberOfComponents() > 1 ? " component " + std::to_string(c)
+                                                 : std::string())
+          << " holds " << v << ", not a finite number";
+        Fail(ExitFailure, m.str());
       }
     }
   }
