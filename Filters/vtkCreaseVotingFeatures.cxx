@@ -48,6 +48,10 @@ inline double MisfitBound(int dof)
   const double n = std::max(dof, 1);
   return n + MisfitSigmas * std::sqrt(2.0 * n);
 }
+// The cubic height field (10 coefficients) stands for a smooth surface only where the points are
+// at least CubicPointsPerTerm per coefficient: with fewer it bends into a crease (at 10 points it
+// interpolates them; at 20-37 it explains most creases).
+constexpr int CubicPointsPerTerm = 10;
 // Two planes of the nearest-plane fit within 10 degrees of parallel and more than 4 times their
 // residual's RMS apart at the fitted point are two sheets (a thin wall), not a crease: a split of
 // pure Gaussian noise puts its planes 2.7 RMS apart.
@@ -592,7 +596,7 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   // cubic height field that does (within the bound of its 10 parameters) stands for the smooth
   // surface. Only where asked (the widest scale): a crease seen from a neighbourhood small enough
   // to be explained by a cubic would be lost.
-  if (cubic)
+  if (cubic && fit.Points >= CubicPointsPerTerm * 10)
   {
     const double crossing = fit.Crossing ? fit.Cross.RSS2 : fit.RSSQ;
     if (std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), crossing) >

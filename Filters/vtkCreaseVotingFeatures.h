@@ -45,7 +45,7 @@
  *    d being the mean spacing.
  *    At the widest scale, where neither the quadric, the hinge nor the crossing planes explain
  *    the points within the noise, a cubic height field that does (within the bound of its 10
- *    parameters) stands for the smooth surface: a free-form face whose curvature changes across
+ *    parameters, fitted to at least 100 points) stands for the smooth surface: a free-form face whose curvature changes across
  *    the neighbourhood (a blend, a blade) is no crease. Not at the smaller scales of step 2b: a
  *    crease seen from a neighbourhood that small is explained by a cubic.
  * 2b. Scale per point (MultiScale). Where neither the quadric, the hinge nor the crossing planes

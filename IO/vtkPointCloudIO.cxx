@@ -91,6 +91,10 @@ void KeepFirst(std::string& first, std::string& pipeline, const char* vtkMessage
       {
         algorithm.erase(open, algorithm.find(')', open) + 1 - open);
       }
+      while (!algorithm.empty() && algorithm.back() == ' ')
+      {
+        algorithm.pop_back(); // "vtkPolyDataReader (0x...)" in later VTK versions
+      }
       const size_t name = algorithm.rfind(' ');
       pipeline = "VTK's " + algorithm.substr(name == std::string::npos ? 0 : name + 1) +
         " failed without saying why (a malformed or cut file, or counts that declare more than "
@@ -737,7 +741,19 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fi
       double bytes = static_cast<double>(pages) * static_cast<double>(pageSize);
       if (extension == "vtk")
       {
-        bytes = std::min(bytes, 2147483648.0 + 64.0 * fileSize);
+        // Beyond the address space this process already has from its parent (a host
+        // application's threads and data: the limit counts them too).
+        double current = 0.0;
+        if (FILE* statm = std::fopen("/proc/self/statm", "r"))
+        {
+          unsigned long size = 0;
+          if (std::fscanf(statm, "%lu", &size) == 1)
+          {
+            current = static_cast<double>(size) * static_cast<double>(pageSize);
+          }
+          std::fclose(statm);
+        }
+        bytes = std::min(bytes, current + 2147483648.0 + 64.0 * fileSize);
       }
       const rlimit space = { static_cast<rlim_t>(bytes), static_cast<rlim_t>(bytes) };
       ::setrlimit(RLIMIT_AS, &space);

@@ -11,7 +11,9 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <set>
 #include <string>
@@ -143,6 +145,17 @@ void vtkPointCloudTextWriter::WriteData()
   // name ending in ":digits" has its colon replaced; a name already taken (the coordinates, an
   // earlier array) gets a suffix _2, _3, ...
   std::set<std::string> used = { "x", "y", "z" };
+  // Columns nx, ny and nz together are the reader's Normals: beside an array named Normals they
+  // are renamed (nx_2, ...), so that the two do not read back as one.
+  std::set<std::string> names;
+  for (vtkDataArray* array : arrays)
+  {
+    names.insert(Lower(ColumnName(array->GetName(), d)));
+  }
+  if (names.count("normals") && names.count("nx") && names.count("ny") && names.count("nz"))
+  {
+    used.insert({ "nx", "ny", "nz" });
+  }
   for (vtkDataArray* array : arrays)
   {
     std::string base = ColumnName(array->GetName(), d);
@@ -151,6 +164,13 @@ void vtkPointCloudTextWriter::WriteData()
       base.find_first_not_of("0123456789", colon + 1) == std::string::npos)
     {
       base[colon] = '_';
+    }
+    // A name that reads as a number would make the header read as data.
+    char* end = nullptr;
+    const double number = std::strtod(base.c_str(), &end);
+    if (base.empty() || (end && *end == '\0' && std::isfinite(number)))
+    {
+      base += "_";
     }
     std::string name = base;
     for (int suffix = 2; used.count(Lower(name)); ++suffix)

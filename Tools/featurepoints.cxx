@@ -1652,9 +1652,7 @@ private:
     this->CheckFinite(0);
   }
 
-  // Every point of the cloud (the piece that starts at point `first` of the file) is finite, and
-  // so is every value of its floating-point arrays: they are written out with the result, which
-  // holds no NaN or infinity (the text formats' reader rejects such a value the same way).
+  // Every point of the cloud (the piece that starts at point `first` of the file) is finite.
   void CheckFinite(vtkIdType first) const
   {
     const vtkIdType n = this->Cloud->GetNumberOfPoints();
@@ -1671,11 +1669,19 @@ private:
         Fail(ExitFailure, m.str());
       }
     }
+  }
+
+  // Every value of the input's floating-point arrays that the output carries (those the method
+  // does not replace with its own, as it does the Normals) is finite: the output holds no NaN or
+  // infinity (the text formats' reader rejects such a value the same way).
+  void CheckInputArrays() const
+  {
     vtkPointData* pd = this->Cloud->GetPointData();
     for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
     {
       vtkDataArray* array = pd->GetArray(a);
-      if (!array || (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE))
+      if (!array || (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE) ||
+        this->Replaced(array))
       {
         continue;
       }
@@ -1685,7 +1691,8 @@ private:
       if (FirstNonFinite(array, i, c, v))
       {
         std::ostringstream m;
-        m << this->S.Input << ": point " << first + i << " (counting from 0): point array '"
+        m << this->S.Input << ": point " << this->FirstPoint + i
+          << " (counting from 0): point array '"
           << vtkPointCloudIO::MessageText(array->GetName() ? array->GetName() : "(no name)") << "'"
           << (array->GetNumberOfComponents() > 1 ? " component " + std::to_string(c)
                                                  : std::string())
@@ -1693,6 +1700,32 @@ private:
         Fail(ExitFailure, m.str());
       }
     }
+  }
+
+  // Whether the method's output replaces the input's array with its own of the same name.
+  bool Replaced(vtkDataArray* array) const
+  {
+    const char* name = array->GetName();
+    if (!name)
+    {
+      return false;
+    }
+#ifdef FEATUREPOINTS_HAVE_MPI
+    if (this->Driver)
+    {
+      // The result's arrays are copies: the driver knows which input arrays the method replaced.
+      for (int a = 0; a < this->Driver->GetNumberOfReplacedArrays(); ++a)
+      {
+        if (std::strcmp(this->Driver->GetReplacedArray(a), name) == 0)
+        {
+          return true;
+        }
+      }
+      return false;
+    }
+#endif
+    vtkAbstractArray* written = this->Result->GetPointData()->GetAbstractArray(name);
+    return written && written != array;
   }
 
   // The method with the options given, on the cloud (in a scaled frame when its extent would
@@ -1758,6 +1791,7 @@ private:
       if (Rank != 0)
       {
         this->Result = this->Driver->GetOutput();
+        this->CheckInputArrays();
         return;
       }
       this->Times.emplace_back("extract", Seconds(start));
@@ -1783,6 +1817,7 @@ private:
     {
       UnscaleResult(this->Result, this->Cloud, *this->M, exponent, s.Input);
     }
+    this->CheckInputArrays();
     const std::string nonFinite = FindNonFinite(this->Result, this->Cloud);
     if (!nonFinite.empty())
     {
