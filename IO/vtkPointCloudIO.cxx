@@ -879,6 +879,18 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fi
   return result;
 }
 
+std::string vtkPointCloudIO::WriteTarget(const std::string& fileName)
+{
+  struct stat info;
+  if (::lstat(fileName.c_str(), &info) != 0 || !S_ISLNK(info.st_mode))
+  {
+    return fileName;
+  }
+  std::string error;
+  const std::string real = vtksys::SystemTools::GetRealPath(fileName, &error);
+  return real.empty() || !error.empty() ? fileName : real;
+}
+
 std::string vtkPointCloudIO::CreateTemporaryFile(
   const std::string& fileName, std::string& error, bool removeOnSignal)
 {
@@ -936,7 +948,7 @@ bool vtkPointCloudIO::CanCreate(const std::string& fileName, std::string& error)
     error = fileName + ": is a folder, not a file";
     return false;
   }
-  const std::string temporary = CreateTemporaryFile(fileName, error);
+  const std::string temporary = CreateTemporaryFile(WriteTarget(fileName), error);
   if (temporary.empty())
   {
     return false;
@@ -963,7 +975,8 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
     return false;
   }
   // Known to the signal handlers from before it exists (see RemoveTemporaryFileInProgress).
-  const std::string temporary = CreateTemporaryFile(fileName, error, true);
+  const std::string target = WriteTarget(fileName);
+  const std::string temporary = CreateTemporaryFile(target, error, true);
   if (temporary.empty())
   {
     return false;
@@ -1060,7 +1073,7 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
           vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode())
                       : message);
   }
-  else if (std::rename(temporary.c_str(), fileName.c_str()) != 0)
+  else if (std::rename(temporary.c_str(), target.c_str()) != 0)
   {
     error = fileName + ": cannot replace the file: " + std::strerror(errno);
     ok = false;

@@ -123,6 +123,13 @@ public:
     const std::string& fileName, std::string& error, bool removeOnSignal = false);
 
   /**
+   * The file that writing `fileName` replaces: the target of a symbolic link (written through,
+   * the link kept, as a shell's redirection does), else `fileName` itself (a link whose target
+   * cannot be resolved is replaced).
+   */
+  static std::string WriteTarget(const std::string& fileName);
+
+  /**
    * Forgets a temporary file of CreateTemporaryFile(..., true) once it is renamed or removed.
    */
   static void ReleaseTemporaryFile(const std::string& temporary);

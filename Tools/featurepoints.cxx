@@ -1324,10 +1324,16 @@ std::string FindNonFinite(vtkPolyData* result, vtkPointSet* cloud)
     double v = 0.0;
     if (FirstNonFinite(array, i, c, v))
     {
+      double x[3] = { 0.0, 0.0, 0.0 };
+      if (i < result->GetNumberOfPoints())
+      {
+        result->GetPoint(i, x);
+      }
       std::ostringstream m;
       m << "the method computed " << v << " for array '" << array->GetName() << "' at point "
-        << i << " (counting from 0): the cloud's coordinates are beyond what it can compute "
-        << "with";
+        << i << " (counting from 0) at (" << x[0] << ", " << x[1] << ", " << x[2]
+        << "): the cloud's coordinates are beyond what it can compute with (a point far from the "
+        << "rest: remove it)";
       return m.str();
     }
   }
@@ -1870,7 +1876,8 @@ private:
     this->Meter->Stage("rendering");
     const auto start = Clock::now();
     std::string error;
-    this->PictureFile = vtkPointCloudIO::CreateTemporaryFile(s.Screenshot, error, true);
+    this->PictureFile = vtkPointCloudIO::CreateTemporaryFile(
+      vtkPointCloudIO::WriteTarget(s.Screenshot), error, true);
     if (this->PictureFile.empty())
     {
       Fail(ExitFailure, error);
@@ -1931,13 +1938,15 @@ private:
     {
       this->Meter->Finish();
       RemoveTemporaries(0);
-      std::remove(s.Output.c_str()); // a failed run leaves no output behind
+      // A failed run leaves no output behind.
+      std::remove(vtkPointCloudIO::WriteTarget(s.Output).c_str());
       Fail(ExitFailure, error);
     }
     this->Meter->Finish();
     this->Times.emplace_back("write", Seconds(start));
     if (!this->PictureFile.empty() &&
-      std::rename(this->PictureFile.c_str(), s.Screenshot.c_str()) != 0)
+      std::rename(this->PictureFile.c_str(), vtkPointCloudIO::WriteTarget(s.Screenshot).c_str()) !=
+        0)
     {
       RemoveTemporaries(0);
       Fail(ExitFailure, s.Screenshot + ": cannot write: " + std::strerror(errno));

@@ -60,7 +60,8 @@ vtkSmartPointer<vtkPolyData> VertexTable(vtkPolyData* curves)
 
 bool WriteObj(vtkPolyData* curves, const std::string& fileName, std::string& error)
 {
-  const std::string temporary = vtkPointCloudIO::CreateTemporaryFile(fileName, error, true);
+  const std::string target = vtkPointCloudIO::WriteTarget(fileName);
+  const std::string temporary = vtkPointCloudIO::CreateTemporaryFile(target, error, true);
   if (temporary.empty())
   {
     return false;
@@ -96,7 +97,7 @@ bool WriteObj(vtkPolyData* curves, const std::string& fileName, std::string& err
   {
     error = fileName + ": cannot write: " + std::strerror(errno);
   }
-  else if (std::rename(temporary.c_str(), fileName.c_str()) != 0)
+  else if (std::rename(temporary.c_str(), target.c_str()) != 0)
   {
     error = fileName + ": cannot replace the file: " + std::strerror(errno);
     ok = false;

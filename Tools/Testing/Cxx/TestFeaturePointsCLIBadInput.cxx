@@ -369,6 +369,17 @@ void FuzzedFiles()
   ExpectSuccess("an output name 5 bytes short of the longest", { Path("names.csv"), Path(longest),
                                                                 "--quiet" });
   Check(!Slurp(Path(longest)).empty(), "an output name 5 bytes short of the longest: not written");
+  // An output that is a symbolic link is written through it; the link stays.
+  ::mkdir(Path("linked").c_str(), 0755);
+  Spit(Path("linked/target.csv"), "old\n");
+  ::unlink(Path("link.csv").c_str());
+  Check(::symlink("linked/target.csv", Path("link.csv").c_str()) == 0, "cannot make link.csv");
+  ExpectSuccess("an output through a link", { Path("names.csv"), Path("link.csv"), "--quiet" });
+  struct stat link;
+  Check(::lstat(Path("link.csv").c_str(), &link) == 0 && S_ISLNK(link.st_mode),
+    "an output through a link: the link was replaced");
+  Check(Slurp(Path("linked/target.csv")).compare(0, 6, "x,y,z,") == 0,
+    "an output through a link: the target was not written");
 }
 
 void CoincidentPoints()
