@@ -45,9 +45,10 @@
  *    d being the mean spacing.
  *    At the widest scale, where neither the quadric, the hinge nor the crossing planes explain
  *    the points within the noise, a cubic height field that does (within the bound of its 10
- *    parameters, fitted to at least 100 points) stands for the smooth surface: a free-form face whose curvature changes across
- *    the neighbourhood (a blend, a blade) is no crease. Not at the smaller scales of step 2b: a
- *    crease seen from a neighbourhood that small is explained by a cubic.
+ *    parameters, fitted to at least 100 points) stands for the smooth surface: a free-form face
+ *    whose curvature changes across the neighbourhood (a blend, a blade) is no crease. Not at the
+ *    smaller scales of step 2b: a crease seen from a neighbourhood that small is explained by a
+ *    cubic.
  * 2b. Scale per point (MultiScale). Where neither the quadric, the hinge nor the crossing planes
  *    explain the k nearest within the noise (a residual of at most dof + 3 sqrt(2 dof) times
  *    sigma^2 for dof degrees of freedom: two creases, a groove, a small face in view), the
