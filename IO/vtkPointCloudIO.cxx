@@ -1062,12 +1062,8 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
       : code != vtkErrorCode::NoError
       ? std::string("cannot write: ") + vtkErrorCode::GetStringFromErrorCode(code)
       : capture.Window->PipelineMessage;
-    // The writers name the temporary file; the user knows the target.
-    const size_t at = message.find(temporary);
-    if (at != std::string::npos)
-    {
-      message.replace(at, temporary.size(), fileName);
-    }
+    // The writers name the temporary file; the user knows the target (as in the warnings).
+    message = capture.Window->Passed(message.c_str());
     error = WithFile(fileName,
       message.empty() ? std::string("cannot write: ") +
           vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode())
