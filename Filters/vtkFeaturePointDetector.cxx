@@ -632,7 +632,8 @@ bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods*
   }
   if (!this->IsDistributed()) // a piece's shape is not the cloud's
   {
-    this->WarnIfDegenerate(neighborhoods->GetPoints(), neighborhoods->GetValidMask());
+    this->WarnIfDegenerate(
+      neighborhoods->GetPoints(), neighborhoods->GetValidMask(), neighborhoods->GetInputDataType());
   }
   return true;
 }
@@ -932,7 +933,8 @@ void vtkFeaturePointDetector::BeginStage(const char* name)
   }
 }
 
-void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned char* valid)
+void vtkFeaturePointDetector::WarnIfDegenerate(
+  vtkPoints* points, const unsigned char* valid, int dataType)
 {
   // Covariance of the whole cloud about its mean. The sums run in parallel over fixed blocks of
   // points and are combined in block order, so they do not depend on the thread count.
@@ -944,6 +946,7 @@ void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned
   // the points in the robust box count, the central 99 % of the points on each axis widened by
   // half its size, as in vtkPointCloudNeighborhoods' grid.
   double lo[3], hi[3];
+  double magnitude = 0.0; // the largest coordinate of the central points, in absolute value
   {
     const vtkIdType stride = std::max<vtkIdType>(1, n / 100000);
     std::vector<double> sample;
@@ -967,6 +970,7 @@ void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned
       }
       double rlo, rhi;
       featurepoints::CentralRange(sample, rlo, rhi);
+      magnitude = std::max({ magnitude, std::abs(rlo), std::abs(rhi) });
       lo[a] = rlo - 0.5 * (rhi - rlo);
       hi[a] = rhi + 0.5 * (rhi - rlo);
     }
@@ -1010,15 +1014,31 @@ void vtkFeaturePointDetector::WarnIfDegenerate(vtkPoints* points, const unsigned
       const Eigen::Vector3d v = p - mean;
       return v * v.transpose();
     });
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov, Eigen::EigenvaluesOnly);
-  const Eigen::Vector3d lambda = solver.eigenvalues(); // ascending
-  const double tiny = 1e-12 * lambda[2];
-  if (lambda[1] <= tiny)
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  const Eigen::Matrix3d axes = solver.eigenvectors(); // columns by ascending eigenvalue
+  // The RMS distances from the principal line and from the principal plane, summed point by
+  // point: a small eigenvalue of the covariance is lost in the rounding of a large one (two
+  // surfaces 1e12 apart), a distance is not.
+  const Eigen::Vector2d squares = sumOverValid(Eigen::Vector2d(Eigen::Vector2d::Zero()),
+    [&mean, &axes](const Eigen::Vector3d& p) -> Eigen::Vector2d {
+      const Eigen::Vector3d v = p - mean;
+      const double a0 = v.dot(axes.col(0)), a1 = v.dot(axes.col(1));
+      return Eigen::Vector2d(a0 * a0 + a1 * a1, a0 * a0);
+    });
+  const double count = std::max(sum[3], 1.0);
+  const double fromLine = std::sqrt(squares[0] / count);
+  const double fromPlane = std::sqrt(squares[1] / count);
+  // Degenerate where those distances are below what the coordinates resolve (a few units in
+  // their last place at the cloud's largest coordinate), not merely small beside the extent.
+  const double unit = dataType == VTK_FLOAT ? std::numeric_limits<float>::epsilon()
+                                            : std::numeric_limits<double>::epsilon();
+  const double resolved = 16.0 * unit * magnitude;
+  if (fromLine <= resolved)
   {
     vtkWarningMacro("All points lie on a straight line: surface normals are undefined there, so "
                     "the normals and scores are arbitrary and no feature point is meaningful.");
   }
-  else if (lambda[0] <= tiny)
+  else if (fromPlane <= resolved)
   {
     vtkWarningMacro("All points lie on one plane: such a cloud has no crease, so any feature point "
                     "found is a boundary or sampling effect.");

@@ -365,8 +365,9 @@ protected:
   // Closes the running stage (if any) and starts timing the next one; nullptr only closes.
   void BeginStage(const char* name);
 
-  // Warns when all valid points lie on a line or on a plane.
-  void WarnIfDegenerate(vtkPoints* points, const unsigned char* valid);
+  // Warns when all valid points lie on a line or on a plane, within what coordinates of
+  // `dataType` (that of the input points) resolve.
+  void WarnIfDegenerate(vtkPoints* points, const unsigned char* valid, int dataType);
 
   int ThresholdMode = AUTOMATIC;
   double Threshold = 1.0;

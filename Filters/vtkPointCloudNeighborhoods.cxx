@@ -178,12 +178,14 @@ vtkPoints* vtkPointCloudNeighborhoods::GetPoints() const
 bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)
 {
   this->Points = points;
+  this->InputDataType = points ? points->GetDataType() : VTK_DOUBLE;
   this->Searchable = false;
   this->ReleaseLocator();
   this->LocatorToPoint.clear();
   this->Valid.clear();
   this->NearestDistances.clear();
   this->NearestKnown.clear();
+  this->Unreached.clear();
   this->NumberOfPoints = points ? points->GetNumberOfPoints() : 0;
   this->NumberOfValidPoints = 0;
   this->FirstInvalidPoint = -1;
@@ -341,6 +343,7 @@ double vtkPointCloudNeighborhoods::ComputeMeanSpacing()
   {
     this->NearestDistances[ids[r]] = nearest[r];
   }
+  this->NoteUnreached(ids, table.data(), 1);
   return this->FinishMeanSpacing();
 }
 
@@ -363,6 +366,22 @@ void vtkPointCloudNeighborhoods::FindNearestDistances(
     this->NearestDistances[ids[r]] = distances[r];
     this->NearestKnown[ids[r]] = 1;
   }
+  this->NoteUnreached(ids, table.data(), 1);
+}
+
+void vtkPointCloudNeighborhoods::NoteUnreached(
+  const std::vector<vtkIdType>& ids, const int32_t* table, int k)
+{
+  // A point whose distance to every other one overflows (a point near 1e308) has no nearest
+  // point: its distance stays 0, but it coincides with nothing.
+  for (size_t r = 0; r < ids.size(); ++r)
+  {
+    if (k <= 0 || table[r * k] < 0)
+    {
+      this->Unreached.push_back(ids[r]);
+    }
+  }
+  std::sort(this->Unreached.begin(), this->Unreached.end());
 }
 
 double vtkPointCloudNeighborhoods::ComputeMeanSpacing(
@@ -390,6 +409,7 @@ double vtkPointCloudNeighborhoods::ComputeMeanSpacing(
       }
     }
   });
+  this->NoteUnreached(ids, table.data(), k);
   return this->FinishMeanSpacing();
 }
 
@@ -400,7 +420,8 @@ double vtkPointCloudNeighborhoods::FinishMeanSpacing()
   std::vector<vtkIdType> stacked;
   for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
   {
-    if (this->Valid[i] && nearest[i] == 0.0 && this->NumberOfValidPoints > 1)
+    if (this->Valid[i] && nearest[i] == 0.0 && this->NumberOfValidPoints > 1 &&
+      !std::binary_search(this->Unreached.begin(), this->Unreached.end(), i))
     {
       stacked.push_back(i);
     }

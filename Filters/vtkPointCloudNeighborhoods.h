@@ -197,6 +197,12 @@ public:
   const double* GetCenter() const VTK_SIZEHINT(3) { return this->Center; }
   const double* GetBounds() const VTK_SIZEHINT(6) { return this->Bounds; }
 
+  /**
+   * The data type of the points given to Build() (VTK_FLOAT, VTK_DOUBLE, ...): their precision.
+   * GetPoints() is a double copy once ReorderSpatially() has run.
+   */
+  int GetInputDataType() const { return this->InputDataType; }
+
   /** Why Build() failed. */
   const std::string& GetErrorText() const { return this->ErrorText; }
 
@@ -227,6 +233,10 @@ protected:
   std::vector<unsigned char> Valid;
   std::vector<double> NearestDistances;
   std::vector<unsigned char> NearestKnown; // FindNearestDistances() filled NearestDistances here
+  int InputDataType = VTK_DOUBLE;
+  std::vector<vtkIdType> Unreached;        // valid points the nearest search found no point for
+  // Adds to Unreached the rows of `table` (k wide, for `ids`) without a neighbour.
+  void NoteUnreached(const std::vector<vtkIdType>& ids, const int32_t* table, int k);
   vtkIdType NumberOfPoints = 0;
   vtkIdType NumberOfValidPoints = 0;
   vtkIdType FirstInvalidPoint = -1;

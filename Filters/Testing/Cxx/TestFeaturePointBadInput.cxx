@@ -144,6 +144,43 @@ int TestFeaturePointBadInput(int, char*[])
     FP_CHECK(o.Seconds < 30.0, "huge outlier: %.1f s", o.Seconds);
     FP_CHECK(CountSet(Mask(o.Filter->GetOutput())) > 20, "features lost next to an outlier");
   }
+  {
+    // A point near the largest double: its distance to every other point overflows, so it has no
+    // nearest point, but it coincides with none either.
+    Cloud c = BentPlanes(8000, 65, 90.0);
+    vtkNew<vtkPoints> p;
+    p->SetDataTypeToDouble();
+    double x[3];
+    for (vtkIdType i = 0; i < c.Data->GetNumberOfPoints(); ++i)
+    {
+      c.Data->GetPoint(i, x);
+      p->InsertNextPoint(x);
+    }
+    p->InsertNextPoint(1e308, 1e308, 1e308);
+    Outcome o = Run(p);
+    expect("point at 1e308", o, nullptr, 8001);
+    FP_CHECK(o.Message.find("coincide") == std::string::npos, "point at 1e308: %s",
+      o.Message.c_str());
+  }
+  {
+    // Two bent sheets 1e12 apart: the cloud's covariance is the separation's, yet its points lie
+    // on no line or plane (the coordinates resolve 1e-4 there).
+    Cloud c = BentPlanes(8000, 66, 90.0);
+    vtkNew<vtkPoints> p;
+    p->SetDataTypeToDouble();
+    double x[3];
+    for (vtkIdType i = 0; i < 8000; ++i)
+    {
+      c.Data->GetPoint(i, x);
+      const double shift = i < 4000 ? 1e12 : 0.0;
+      p->InsertNextPoint(x[0] + shift, x[1] + shift, x[2]);
+    }
+    Outcome o = Run(p);
+    expect("two sheets 1e12 apart", o, nullptr, 8000);
+    FP_CHECK(o.Message.find("straight line") == std::string::npos &&
+        o.Message.find("one plane") == std::string::npos,
+      "two sheets 1e12 apart: %s", o.Message.c_str());
+  }
   // Clouds of 65536 points and more go through the voxel screen's spatial sample first: NaN
   // points, stacks of duplicates and a far outlier together must not upset it.
   for (const double factor : { 1.0, 3.0 })

@@ -534,7 +534,29 @@ void ExtremeScales()
     ExpectSuccess("one point at 1e30", { Path("outlier.xyz"), Path("outlier.vtp"), "--method", "pca" });
   Check(run.Err.find("straight line") == std::string::npos,
     "one point at 1e30: the rest is called a straight line: " + run.Err);
-  for (const char* name : { "unit", "big", "tiny", "e200", "outlier" })
+  // One point at 1e308 (its distance to any other point overflows): no coincident point. Two
+  // copies of the part 1e12 apart: no straight line, no plane.
+  const std::string part = ModelText(1, 1500, 1.0);
+  Spit(Path("e308.xyz"), part + "1e308 1e308 1e308\n");
+  const Run far = ExpectSuccess("one point at 1e308", { Path("e308.xyz"), Path("e308.vtp") });
+  Check(far.Err.find("coincide") == std::string::npos,
+    "one point at 1e308 is said to coincide with another: " + far.Err);
+  std::ostringstream apart;
+  apart.precision(17);
+  std::istringstream rows(part);
+  for (std::string line; std::getline(rows, line);)
+  {
+    std::istringstream fields(line);
+    double x, y, z;
+    fields >> x >> y >> z;
+    apart << x << " " << y << " " << z << "\n" << x + 1e12 << " " << y + 1e12 << " " << z << "\n";
+  }
+  Spit(Path("apart.xyz"), apart.str());
+  const Run two = ExpectSuccess("two parts 1e12 apart", { Path("apart.xyz"), Path("apart.vtp") });
+  Check(two.Err.find("straight line") == std::string::npos &&
+      two.Err.find("one plane") == std::string::npos,
+    "two parts 1e12 apart are called degenerate: " + two.Err);
+  for (const char* name : { "unit", "big", "tiny", "e200", "outlier", "e308", "apart" })
   {
     ::unlink(Path(std::string(name) + ".vtp").c_str());
   }
