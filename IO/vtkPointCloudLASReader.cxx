@@ -179,11 +179,17 @@ int vtkPointCloudLASReader::RequestData(
   }
   const unsigned headerSize = Load<uint16_t>(header + HeaderSizeAt, swap);
   const size_t leastHeader = minor >= 4 ? HeaderSize14 : (minor == 3 ? HeaderSize13 : HeaderSize12);
-  if (headerSize < leastHeader || headerSize > fileSize)
+  if (headerSize < leastHeader)
   {
     return bad("header size " + std::to_string(headerSize) + " is impossible for LAS " +
       std::to_string(major) + "." + std::to_string(minor) + " (at least " +
-      std::to_string(leastHeader) + " bytes, the file has " + std::to_string(fileSize) + ")");
+      std::to_string(leastHeader) + " bytes)");
+  }
+  if (headerSize > fileSize)
+  {
+    return bad("the file ends in the LAS " + std::to_string(major) + "." +
+      std::to_string(minor) + " header (" + std::to_string(headerSize) +
+      " bytes, the file has " + std::to_string(fileSize) + ")");
   }
   const uint64_t pointOffset = Load<uint32_t>(header + OffsetToPointDataAt, swap);
   if (pointOffset < headerSize || pointOffset > fileSize)

@@ -57,6 +57,7 @@
 #endif
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -563,6 +564,21 @@ int Rank = 0;
   }
 #endif
   std::exit(code);
+}
+
+// The exit code once the summary has reached standard output: a write that failed (a full
+// device, a closed descriptor) fails the run, as the output's would.
+int FinishStandardOutput(int code, const std::string& output)
+{
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout))
+  {
+    return code;
+  }
+  const int error = errno;
+  std::fprintf(stderr,
+    "featurepoints: standard output: cannot write the summary (%s); %s was written\n",
+    std::strerror(error), vtkPointCloudIO::OneLine(output).c_str());
+  return code == ExitSuccess ? ExitFailure : code;
 }
 
 // The number of processes mpiexec started (Open MPI, MPICH/Hydra, PMIx), or 1.
@@ -2106,7 +2122,7 @@ int main(int argc, char* argv[])
   try
   {
     FeaturePointsRun run(s);
-    const int code = run.Execute();
+    const int code = FinishStandardOutput(run.Execute(), s.Output);
 #ifdef FEATUREPOINTS_HAVE_MPI
     if (Processes)
     {

@@ -65,6 +65,7 @@ struct Limits
   int Signal = 0;
   std::string SignalOnMessage; // or as soon as stderr holds this text
   long FileSizeLimit = -1;     // RLIMIT_FSIZE in bytes
+  std::string StandardOutput;  // a file for stdout instead of the captured one (/dev/full)
 };
 
 // Runs the program with these arguments, stdout and stderr captured.
@@ -85,7 +86,8 @@ Run Execute(const std::vector<std::string>& arguments, const Limits& limits = Li
   const pid_t pid = ::fork();
   if (pid == 0)
   {
-    const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const std::string& to = limits.StandardOutput.empty() ? out : limits.StandardOutput;
+    const int o = ::open(to.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(o, 1);
     ::dup2(e, 2);
@@ -642,6 +644,19 @@ void OneLineErrors()
       { Path("cloud.xyz"), Path(std::string("full.") + extension), "--quiet" }, 1,
       std::string("full.") + extension + ": ", 20.0, limits);
   }
+  // A summary that cannot be written (standard output on a full device) fails the run, saying
+  // so; the output file, written before, is whole.
+  Limits full;
+  full.StandardOutput = "/dev/full";
+  const Run run = Execute({ Path("cloud.xyz"), Path("summary.vtp") }, full);
+  Check(run.Code == 1 &&
+      run.Err.find("featurepoints: standard output: cannot write the summary") !=
+        std::string::npos,
+    "summary to /dev/full: exit code " + std::to_string(run.Code) + ", " + run.Err);
+  std::string error;
+  vtkSmartPointer<vtkPointSet> written = vtkPointCloudIO::Read(Path("summary.vtp"), error);
+  Check(written && written->GetNumberOfPoints() == 3000, "summary to /dev/full: output " + error);
+  ::unlink(Path("summary.vtp").c_str());
 }
 
 void KeptColumns()
