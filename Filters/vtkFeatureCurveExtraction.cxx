@@ -362,6 +362,9 @@ private:
   // Whether direction t at x runs along the crease that the normals of the points around x
   // show (true where they show none: one face, or a corner).
   bool AlongNormals(const V3& x, const V3& t) const;
+  // Whether the gap from a along t (length long) is a border's: both ends on one, and the
+  // detector's border points along all of it.
+  bool BorderAlong(const V3& a, const V3& t, double length) const;
   // Whether most of the trace points `ids` are border points.
   bool MostlyBorder(const std::vector<vtkIdType>& ids) const;
   // The crease direction c that the normals of the points around x show; false where they show
@@ -1050,6 +1053,7 @@ void CurveRun::BridgeAlongCreases()
   {
     double Length;
     size_t A, B;
+    bool Straight; // facing within FacingCone (a crease's gap), else within BridgeCone
   };
   std::vector<Gap> gaps;
   for (size_t a = 0; a < ends.size(); ++a)
@@ -1058,10 +1062,10 @@ void CurveRun::BridgeAlongCreases()
     {
       const V3 ab = this->G.Vertices[ends[b]] - this->G.Vertices[ends[a]];
       const double length = ab.norm();
-      if (length > 0.0 && ab.dot(directions[a]) >= FacingCone * length &&
-        -ab.dot(directions[b]) >= FacingCone * length)
+      const double facing = std::min(ab.dot(directions[a]), -ab.dot(directions[b]));
+      if (length > 0.0 && facing >= BridgeCone * length)
       {
-        gaps.push_back({ length, a, b });
+        gaps.push_back({ length, a, b, facing >= FacingCone * length });
       }
     }
   }
@@ -1086,7 +1090,7 @@ void CurveRun::BridgeAlongCreases()
     const V3 middle = a + 0.5 * gap.Length * t;
     Eigen::Vector2d u;
     const Bend whole = this->BendAt(middle, t, 0.5 * gap.Length + this->R, u, false);
-    bool crease = whole.Valid && whole.Angle >= std::asin(MinimumCreaseAngle) &&
+    bool crease = gap.Straight && whole.Valid && whole.Angle >= std::asin(MinimumCreaseAngle) &&
       std::abs(whole.Difference) > CreaseSignificance * whole.Error;
     const int tests = static_cast<int>(std::ceil(gap.Length / this->R));
     for (int k = 0; crease && k <= tests; ++k)
@@ -1097,12 +1101,13 @@ void CurveRun::BridgeAlongCreases()
       crease = local.Valid &&
         !(offCrease > std::abs(local.Difference) && offCrease > CreaseSignificance * local.Error);
     }
+    const bool border = !crease && this->BorderAlong(a, t, gap.Length);
     std::vector<V3> bridge;
     for (int k = 1; k < steps; ++k)
     {
       bridge.push_back(a + (gap.Length * k / steps) * t);
     }
-    if (!crease)
+    if (!crease && !border)
     {
       continue;
     }
@@ -1116,6 +1121,69 @@ void CurveRun::BridgeAlongCreases()
     this->G.Link(previous, ends[gap.B]);
     used[gap.A] = used[gap.B] = 1;
   }
+}
+
+bool CurveRun::BorderAlong(const V3& a, const V3& t, double length) const
+{
+  // Both ends on a border, and the cloud ends at the gap's line all along it: at every FitRadius
+  // along it, the points within 2 FitRadius lie on one side of the line in their tangent plane,
+  // the same side throughout, none beyond it by more than FitRadius (the border's band and the
+  // trace's place in it). A sampling that recedes from the edge leaves the detector's
+  // empty-sector test without border points there; a surface that goes on has points far out on
+  // both sides.
+  if (this->LocalType(a) != BORDER || this->LocalType(a + length * t) != BORDER)
+  {
+    return false;
+  }
+  const double beyond = this->R;
+  const int tests = static_cast<int>(std::ceil(length / this->R));
+  V3 empty = V3::Zero(); // the direction across the line in which no point lies
+  for (int k = 0; k <= tests; ++k)
+  {
+    const V3 x = a + (length * k / tests) * t;
+    this->AllSearch.Within(x, 2.0 * this->R, this->Scratch);
+    if (this->Scratch.size() < 10)
+    {
+      return false;
+    }
+    V3 mean = V3::Zero();
+    for (vtkIdType i : this->Scratch)
+    {
+      mean += this->Points[i];
+    }
+    mean /= static_cast<double>(this->Scratch.size());
+    Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+    for (vtkIdType i : this->Scratch)
+    {
+      const V3 r = this->Points[i] - mean;
+      c += r * r.transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(c);
+    const V3 across = solver.eigenvectors().col(0).cross(t);
+    if (!(across.norm() > 0.5))
+    {
+      return false; // the line runs across the surface, not along it
+    }
+    const V3 u = across.normalized();
+    int plus = 0, minus = 0;
+    for (vtkIdType i : this->Scratch)
+    {
+      const double offset = (this->Points[i] - x).dot(u);
+      plus += offset > beyond ? 1 : 0;
+      minus += offset < -beyond ? 1 : 0;
+    }
+    if ((plus == 0) == (minus == 0))
+    {
+      return false; // points far out on both sides (the surface goes on), or on neither
+    }
+    const V3 side = plus == 0 ? u : V3(-u);
+    if (k > 0 && side.dot(empty) <= 0.0)
+    {
+      return false;
+    }
+    empty = side;
+  }
+  return true;
 }
 
 V3 CurveRun::EndDirection(int end, double reach, bool skipHook) const

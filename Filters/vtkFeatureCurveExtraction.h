@@ -47,6 +47,11 @@
  *    the faces' residuals: the cloud's own noise), and no stretch of 2 FitRadius s along it looks
  *    flat (a bend nearer to none than to the gap's, and off the latter by more than 3 of its own
  *    errors). The detector misses stretches of shallow creases; the cloud still shows them.
+ *    Two free border ends that face each other within 30 degrees are joined where the cloud ends
+ *    at the gap's line all along it: at every FitRadius s, the points within 2 FitRadius s lie on
+ *    one side of the line in their tangent plane (the same side throughout), none beyond it by
+ *    more than FitRadius s. Where the sampling recedes from an edge the detector finds no border
+ *    point; the cloud still ends there.
  * 3. Cleaning. Branches shorter than MinimumLength s that end freely (spurs), and pieces shorter
  *    than that, are removed, and pieces on their own shorter than 2 FitRadius s (no longer than
  *    one line fit's window); so are free branches shorter than 2 FitRadius s whose
