@@ -78,6 +78,9 @@ const double ThroughCone = std::cos(vtkMath::RadiansFromDegrees(150.0)); // a cu
 // Two faces' slopes further apart than this many standard errors (from the faces' own residuals,
 // the cloud's noise) are a bend, not noise.
 constexpr double CreaseSignificance = 3.0;
+// Two faces (4 parameters) explain a cross-section better than one quadratic face (3) when their
+// residual is lower by more than 2 noise variances (Akaike's criterion: 2 per parameter).
+constexpr double KinkAIC = 2.0;
 
 enum Types
 {
@@ -321,6 +324,9 @@ public:
   void RemoveSpurs();
   // Free branches and pieces made of points nobody voted for.
   void RemoveUnsupported();
+  // Straight pieces on their own, off the borders, across which the cloud does not bend (stray
+  // feature points on a smooth face).
+  void RemoveFlatPieces();
   // Gaps in the feature points along a crease: two free ends that point at each other are
   // bridged where the cloud's cross-section shows the crease at every step between them.
   void BridgeAlongCreases();
@@ -387,6 +393,8 @@ private:
   {
     bool Valid = false;
     double Difference = 0.0, Error = 0.0, Angle = 0.0;
+    // How much better the two faces fit than one quadratic face (an F statistic).
+    double Kink = 0.0;
   };
   Bend BendAt(const V3& x, const V3& t, double halfLength, Eigen::Vector2d& u, bool fixed) const;
   // The crease in the cross-section (x itself when the points show none; `found` says which).
@@ -859,6 +867,56 @@ void CurveRun::RemoveUnsupported()
       supported += this->Supported[i];
     }
     if (static_cast<double>(supported) >= MinimumSupport * static_cast<double>(near.size()))
+    {
+      continue;
+    }
+    for (size_t k = 1; k < chain.Ids.size(); ++k)
+    {
+      this->G.Unlink(chain.Ids[k - 1], chain.Ids[k]);
+    }
+  }
+}
+
+void CurveRun::RemoveFlatPieces()
+{
+  std::vector<vtkIdType> ids;
+  for (const Chain& chain : this->ExtractChains())
+  {
+    const int first = chain.Ids.front(), last = chain.Ids.back();
+    if (chain.Closed || this->G.Degree(first) != 1 || this->G.Degree(last) != 1 ||
+      this->G.Node[first] || this->G.Node[last])
+    {
+      continue;
+    }
+    // A straight piece on its own (every vertex within one spacing of its chord), on a crease.
+    const V3 a = this->G.Vertices[first];
+    const V3 chord = this->G.Vertices[last] - a;
+    const double length = chord.norm();
+    if (!(length > 0.0))
+    {
+      continue;
+    }
+    const V3 t = chord / length;
+    bool straight = true;
+    std::set<vtkIdType> near;
+    for (int v : chain.Ids)
+    {
+      const V3 r = this->G.Vertices[v] - a;
+      straight = straight && (r - r.dot(t) * t).norm() <= this->S;
+      this->TraceSearch.Within(this->G.Vertices[v], CollisionRadius * this->S, ids);
+      near.insert(ids.begin(), ids.end());
+    }
+    if (!straight || this->MostlyBorder(std::vector<vtkIdType>(near.begin(), near.end())))
+    {
+      continue;
+    }
+    // The cloud across it, as for a bridge: a crease bends by a crease's angle, significantly.
+    Eigen::Vector2d u;
+    const Bend whole = this->BendAt(a + 0.5 * chord, t, 0.5 * length + this->R, u, false);
+    if (!whole.Valid ||
+      (whole.Angle >= std::asin(MinimumCreaseAngle) &&
+        std::abs(whole.Difference) > CreaseSignificance * whole.Error &&
+        whole.Kink > KinkAIC))
     {
       continue;
     }
@@ -1831,7 +1889,7 @@ CurveRun::Bend CurveRun::BendAt(
     u = plane.eigenvectors().col(1);
   }
   const Eigen::Vector2d v(-u[1], u[0]);
-  double slope[2], variance[2];
+  double slope[2], variance[2], hinge = 0.0;
   for (int g = 0; g < 2; ++g)
   {
     double sa = 0.0, sh = 0.0;
@@ -1874,7 +1932,29 @@ CurveRun::Bend CurveRun::BendAt(
       }
     }
     variance[g] = residual / std::max(1, n - 2) / saa;
+    hinge += residual;
   }
+  // One smooth face instead: a quadratic height over u through all the points. Where it leaves
+  // no more than the two faces (F of its one parameter fewer), the section bends smoothly.
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d right = Eigen::Vector3d::Zero();
+  for (const auto& p : q)
+  {
+    const double a = p.dot(u);
+    const Eigen::Vector3d row(1.0, a, a * a);
+    normal += row * row.transpose();
+    right += row * p.dot(v);
+  }
+  const Eigen::Vector3d coefficients = normal.ldlt().solve(right);
+  double smooth = 0.0;
+  for (const auto& p : q)
+  {
+    const double a = p.dot(u);
+    const double e = p.dot(v) - coefficients.dot(Eigen::Vector3d(1.0, a, a * a));
+    smooth += e * e;
+  }
+  const double perPoint = hinge / std::max(1, static_cast<int>(q.size()) - 4);
+  result.Kink = perPoint > 0.0 ? (smooth - hinge) / perPoint : 0.0;
   result.Valid = true;
   result.Difference = slope[1] - slope[0];
   result.Error = std::sqrt(variance[0] + variance[1]);
@@ -2418,6 +2498,7 @@ int vtkFeatureCurveExtraction::RequestData(
   run.JoinEnds();
   run.RemoveSpurs();
   run.BridgeAlongCreases();
+  run.RemoveFlatPieces();
   run.SplitAtCorners();
   std::vector<std::array<int, 2>> through;
   const std::vector<Chain> chains = run.MergeThrough(run.ExtractChains(), through);

@@ -1,8 +1,8 @@
 // vtkFeatureCurveExtraction: on generated parts, the curves are as many as the true ones, meet at
 // the corners, close on circles, lie near the exact curves; the point output's CurveId agrees
 // with the lines; a branch of unvoted points is removed, a curve goes on through a T junction; a
-// gap along a shallow crease is bridged, the same gap on a flat sheet is not; bad input gives an
-// error, not a crash.
+// gap along a shallow crease is bridged, the same marks on a flat sheet give no curve; bad input
+// gives an error, not a crash.
 #include "FeaturePointsTestRun.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -416,17 +416,22 @@ int TestFeatureCurveExtraction(int, char*[])
     }
   }
   // A gap along a shallow crease (15 degrees) is bridged, as the cloud bends all along it: one
-  // curve from end to end; the same gap on a flat sheet is not.
+  // curve from end to end. The same marks on a flat sheet are no crease: the two straight pieces,
+  // across which the cloud does not bend, are removed, and nothing is bridged.
   for (const double bend : { 15.0, 0.0 })
   {
     vtkNew<vtkFeatureCurveExtraction> curves;
     curves->SetInputData(CreaseWithGap(bend));
     curves->Update();
     vtkPolyData* lines = curves->GetCurves();
-    const vtkIdType expected = bend > 0.0 ? 1 : 2;
+    const vtkIdType expected = bend > 0.0 ? 1 : 0;
     Expect(lines->GetNumberOfCells() == expected,
-      bend > 0.0 ? "gap on a 15-degree crease: curves (1)" : "gap on a flat sheet: curves (2)",
+      bend > 0.0 ? "gap on a 15-degree crease: curves (1)" : "gap on a flat sheet: curves (0)",
       lines->GetNumberOfCells());
+    if (expected == 0)
+    {
+      continue;
+    }
     double bounds[6];
     lines->GetBounds(bounds);
     Expect(bounds[0] < -37.0 && bounds[1] > 37.0 && std::abs(bounds[2]) < 1.5 &&
