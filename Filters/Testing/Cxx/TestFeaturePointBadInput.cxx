@@ -116,6 +116,18 @@ int TestFeaturePointBadInput(int, char*[])
     expect("all points coincide", Run(p), "All points coincide", 0);
   }
   {
+    // Two positions, 50,000 copies each: each copy's nearest distinct point used to be searched
+    // for on its own, a walk through the whole grid per copy (minutes); now once per position.
+    vtkNew<vtkPoints> p;
+    for (int i = 0; i < 100000; ++i)
+    {
+      p->InsertNextPoint(i % 2, 0.0, 0.0);
+    }
+    Outcome o = Run(p);
+    expect("two positions, 50,000 copies each", o, "coincide with another point", 100000);
+    FP_CHECK(o.Seconds < 30.0, "two positions, 50,000 copies each: %.1f s", o.Seconds);
+  }
+  {
     vtkNew<vtkPoints> p;
     for (int i = 0; i < 2000; ++i)
     {
