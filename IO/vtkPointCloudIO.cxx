@@ -31,8 +31,10 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -352,6 +354,125 @@ std::string TemporaryName(const std::string& prefix)
   }
   return name;
 }
+
+// The value of attribute `name` in the XML tag text `tag` ("" when absent).
+std::string TagAttribute(const std::string& tag, const std::string& name)
+{
+  const std::string key = " " + name + "=\"";
+  const size_t at = tag.find(key);
+  if (at == std::string::npos)
+  {
+    return std::string();
+  }
+  const size_t begin = at + key.size();
+  const size_t end = tag.find('"', begin);
+  return end == std::string::npos ? std::string() : tag.substr(begin, end - begin);
+}
+
+// A VTK XML file's raw appended data against the file's size: VTK's reader fills the arrays of a
+// file cut short (or an offset before the data) with zeros or with the bytes around, and says
+// nothing. Each uncompressed array's block (its byte count, then its bytes) must lie within the
+// file. Other encodings and compressed blocks, which VTK's reader checks, pass.
+bool CheckAppendedData(const std::string& fileName, double fileSize, std::string& error)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  std::string head;
+  std::vector<char> chunk(1 << 16);
+  size_t appended = std::string::npos;
+  while (in && appended == std::string::npos && head.size() < (size_t(64) << 20))
+  {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    head.append(chunk.data(), static_cast<size_t>(in.gcount()));
+    appended = head.find("<AppendedData");
+  }
+  if (appended == std::string::npos)
+  {
+    return true;
+  }
+  size_t close = head.find('>', appended);
+  while (close == std::string::npos && in)
+  {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    head.append(chunk.data(), static_cast<size_t>(in.gcount()));
+    close = head.find('>', appended);
+  }
+  const size_t fileTag = head.find("<VTKFile");
+  const size_t fileTagEnd = fileTag == std::string::npos ? fileTag : head.find('>', fileTag);
+  if (close == std::string::npos || fileTagEnd == std::string::npos)
+  {
+    return true; // VTK's parser reports the broken XML
+  }
+  const std::string file = head.substr(fileTag, fileTagEnd - fileTag);
+  const std::string appendedTag = head.substr(appended, close - appended);
+  if (TagAttribute(appendedTag, "encoding") != "raw" || !TagAttribute(file, "compressor").empty())
+  {
+    return true;
+  }
+  const size_t underscore = head.find('_', close);
+  if (underscore == std::string::npos)
+  {
+    return true;
+  }
+  const double start = static_cast<double>(underscore + 1);
+  const int headerBytes = TagAttribute(file, "header_type") == "UInt64" ? 8 : 4;
+  const bool bigEndian = TagAttribute(file, "byte_order") == "BigEndian";
+  for (size_t tag = head.find("<DataArray"); tag < appended; tag = head.find("<DataArray", tag + 1))
+  {
+    const size_t tagEnd = head.find('>', tag);
+    if (tagEnd == std::string::npos || tagEnd > appended)
+    {
+      break;
+    }
+    const std::string array = head.substr(tag, tagEnd - tag);
+    if (TagAttribute(array, "format") != "appended")
+    {
+      continue;
+    }
+    const std::string name = TagAttribute(array, "Name");
+    const std::string text = TagAttribute(array, "offset");
+    const std::string what = name.empty() ? "the unnamed array at appended offset " + text
+                                          : "array '" + name + "'";
+    char* end = nullptr;
+    const double offset = std::strtod(text.c_str(), &end);
+    while (end && std::isspace(static_cast<unsigned char>(*end)))
+    {
+      ++end;
+    }
+    if (text.empty() || *end != '\0' || !(offset >= 0.0))
+    {
+      error = fileName + ": " + what + ": offset '" + text +
+        "' into the appended data is not a byte count from its start";
+      return false;
+    }
+    const double at = start + offset;
+    if (at + headerBytes > fileSize)
+    {
+      error = fileName + ": " + what + " starts at byte " +
+        std::to_string(static_cast<long long>(at)) + ", past the end of the file (" +
+        std::to_string(static_cast<long long>(fileSize)) + " bytes): the file is cut short";
+      return false;
+    }
+    unsigned char bytes[8] = { 0 };
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(at));
+    in.read(reinterpret_cast<char*>(bytes), headerBytes);
+    double count = 0.0;
+    for (int b = 0; b < headerBytes; ++b)
+    {
+      const int i = bigEndian ? b : headerBytes - 1 - b;
+      count = count * 256.0 + bytes[i];
+    }
+    if (at + headerBytes + count > fileSize)
+    {
+      error = fileName + ": " + what + " holds " + std::to_string(static_cast<long long>(count)) +
+        " bytes from byte " + std::to_string(static_cast<long long>(at + headerBytes)) +
+        ", but the file ends at byte " + std::to_string(static_cast<long long>(fileSize)) +
+        ": the file is cut short";
+      return false;
+    }
+  }
+  return true;
+}
 } // namespace
 
 vtkSmartPointer<vtkCellArray> vtkPointCloudIO::MakeVertexCells(vtkIdType n)
@@ -528,6 +649,11 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   }
 
   const bool vtkFormat = extension == "vtp" || extension == "vtu" || extension == "vtk";
+  if ((extension == "vtp" || extension == "vtu") &&
+    !CheckAppendedData(fileName, static_cast<double>(info.st_size), error))
+  {
+    return nullptr;
+  }
   return vtkFormat ? ReadIsolated(fileName, extension, static_cast<double>(info.st_size), error, observer)
                    : ReadWithReader(fileName, extension, error, observer);
 }

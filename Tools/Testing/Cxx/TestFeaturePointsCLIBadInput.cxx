@@ -19,6 +19,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkXMLPolyDataWriter.h"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -322,6 +323,26 @@ void FuzzedFiles()
       "VERTICES 1000000000 2000000000\n1 0\n");
   ExpectFailure("legacy VTK declaring 10^9 cells", { Path("billion-cells.vtk"), Path("o.vtp") }, 1,
     "billion-cells.vtk: cannot read: VTK's vtkPolyDataReader failed without saying why", 10.0);
+  // A VTP with raw appended data cut short: VTK's reader fills the missing points with zeros and
+  // says nothing; the command refuses it.
+  {
+    vtkNew<vtkFeatureModelSource> part;
+    part->SetNumberOfPoints(1500);
+    vtkNew<vtkXMLPolyDataWriter> raw;
+    raw->SetInputConnection(part->GetOutputPort());
+    raw->SetFileName(Path("raw.vtp").c_str());
+    raw->SetDataModeToAppended();
+    raw->EncodeAppendedDataOff();
+    raw->SetCompressorTypeToNone();
+    raw->Write();
+    ExpectSuccess("a raw appended VTP", { Path("raw.vtp"), Path("raw.csv"), "--quiet" });
+    const std::string whole = Slurp(Path("raw.vtp"));
+    Spit(Path("raw-cut.vtp"), whole.substr(0, whole.size() - 1000));
+    ExpectFailure("a raw appended VTP cut short", { Path("raw-cut.vtp"), Path("o.csv") }, 1,
+      "but the file ends at byte " + std::to_string(whole.size() - 1000) +
+        ": the file is cut short");
+    ::unlink(Path("raw.csv").c_str());
+  }
   // Array names a CSV header would repeat or read as components: an input array named x (a CSV
   // header with x twice), one-component arrays named "Normals:0" and "t:1" beside the output's own
   // Normals. The output names each column once and reads back.
