@@ -18,6 +18,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -66,8 +67,14 @@ std::string_view Trim(std::string_view s)
 }
 
 // The whole field must be a number; a leading '+' is accepted (strtod accepts it, from_chars not).
-bool ParseNumber(std::string_view field, double& value)
+// A number below the smallest double (1e-400) reads as what strtod makes of it (0 or a denormal);
+// one beyond the largest (1e400) is none: `outOfRange` says which failure it was.
+bool ParseNumber(std::string_view field, double& value, bool* outOfRange = nullptr)
 {
+  if (outOfRange)
+  {
+    *outOfRange = false;
+  }
   if (!field.empty() && field.front() == '+')
   {
     field.remove_prefix(1);
@@ -77,7 +84,25 @@ bool ParseNumber(std::string_view field, double& value)
     return false;
   }
   const auto result = std::from_chars(field.data(), field.data() + field.size(), value);
-  return result.ec == std::errc() && result.ptr == field.data() + field.size();
+  if (result.ptr != field.data() + field.size())
+  {
+    return false;
+  }
+  if (result.ec == std::errc::result_out_of_range)
+  {
+    const double read = std::strtod(std::string(field).c_str(), nullptr);
+    if (std::isfinite(read))
+    {
+      value = read; // underflow
+      return true;
+    }
+    if (outOfRange)
+    {
+      *outOfRange = true;
+    }
+    return false;
+  }
+  return result.ec == std::errc();
 }
 
 void Split(std::string_view line, char delimiter, std::vector<std::string_view>& fields)
@@ -447,9 +472,10 @@ struct TextParse
     for (size_t c = 0; c < fields.size(); ++c)
     {
       double value = 0.0;
-      if (!ParseNumber(fields[c], value))
+      bool outOfRange = false;
+      if (!ParseNumber(fields[c], value, &outOfRange))
       {
-        return bad(c, "a number");
+        return bad(c, outOfRange ? "within the range of a double (about 1.8e308)" : "a number");
       }
       if (!std::isfinite(value))
       {
@@ -615,6 +641,12 @@ int vtkPointCloudTextReader::RequestData(
     if (!line.empty() && line.back() == '\r')
     {
       line.remove_suffix(1);
+    }
+    if (line.find('\r') != std::string_view::npos)
+    {
+      return fail(Problem{ vtkErrorCode::FileFormatError, lineNumber,
+        "a carriage return inside the line: the file's lines end in CR alone (old Mac text); "
+        "convert them to LF (tr '\\r' '\\n')" });
     }
     const std::string_view trimmed = Trim(line);
     if (trimmed.empty() || trimmed.front() == '#')

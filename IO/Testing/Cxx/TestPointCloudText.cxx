@@ -127,6 +127,18 @@ int TestPointCloudText(int argc, char* argv[])
   ExpectError(folder, "nan.xyz", "1 2 3\nnan 2 3\n", ":2: field 1 ('nan') is not a finite number");
   ExpectError(folder, "inf.csv", "1,2,inf\n", ":1: field 3 ('inf') is not a finite number");
   ExpectError(folder, "suffix.xyz", "1 2 3.5abc\n", "('3.5abc') is not a number");
+  ExpectError(folder, "overflow.xyz", "1 2 3\n1 2 1e400\n",
+    ":2: field 3 ('1e400') is not within the range of a double");
+  ExpectError(folder, "cr.csv", "x,y,z\r1,2,3\r4,5,6\r",
+    ":1: a carriage return inside the line: the file's lines end in CR alone");
+  {
+    // Below the smallest double: read as strtod reads it (0), not refused.
+    Spit(folder + "/underflow.xyz", "1 2 3\n1e-400 2 3\n");
+    Read r(folder + "/underflow.xyz");
+    Check(r.Error.empty() && r.Output->GetNumberOfPoints() == 2 &&
+        r.Output->GetPoint(1)[0] == 0.0,
+      "underflow.xyz: 1e-400 read as 0: " + r.Error);
+  }
   ExpectError(folder, "twocolumns.xyz", "1 2\n", "a point needs 3 coordinates");
   ExpectError(folder, "noxyz.csv", "a,b,c\n1,2,3\n", "names no x, y and z");
   ExpectError(folder, "comments.txt", "# nothing\n\n", "holds no point");
