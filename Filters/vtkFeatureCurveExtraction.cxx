@@ -26,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -1147,7 +1148,8 @@ void CurveRun::BridgeAlongCreases()
     const int steps = static_cast<int>(std::ceil(gap.Length / this->H));
     const V3 middle = a + 0.5 * gap.Length * t;
     Eigen::Vector2d u;
-    const Bend whole = this->BendAt(middle, t, 0.5 * gap.Length + this->R, u, false);
+    const Bend whole =
+      gap.Straight ? this->BendAt(middle, t, 0.5 * gap.Length + this->R, u, false) : Bend();
     bool crease = gap.Straight && whole.Valid && whole.Angle >= std::asin(MinimumCreaseAngle) &&
       std::abs(whole.Difference) > CreaseSignificance * whole.Error;
     const int tests = static_cast<int>(std::ceil(gap.Length / this->R));
@@ -1954,7 +1956,9 @@ CurveRun::Bend CurveRun::BendAt(
     smooth += e * e;
   }
   const double perPoint = hinge / std::max(1, static_cast<int>(q.size()) - 4);
-  result.Kink = perPoint > 0.0 ? (smooth - hinge) / perPoint : 0.0;
+  result.Kink = perPoint > 0.0
+    ? (smooth - hinge) / perPoint
+    : (smooth > 0.0 ? std::numeric_limits<double>::infinity() : 0.0); // exact faces
   result.Valid = true;
   result.Difference = slope[1] - slope[0];
   result.Error = std::sqrt(variance[0] + variance[1]);

@@ -29,7 +29,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <charconv>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -355,18 +357,23 @@ std::string TemporaryName(const std::string& prefix)
   return name;
 }
 
-// The value of attribute `name` in the XML tag text `tag` ("" when absent).
+// The value of attribute `name` in the XML tag text `tag` ("" when absent): any whitespace
+// before the name, either quote.
 std::string TagAttribute(const std::string& tag, const std::string& name)
 {
-  const std::string key = " " + name + "=\"";
-  const size_t at = tag.find(key);
-  if (at == std::string::npos)
+  for (size_t at = tag.find(name); at != std::string::npos; at = tag.find(name, at + 1))
   {
-    return std::string();
+    size_t k = at + name.size();
+    if (at == 0 || !std::isspace(static_cast<unsigned char>(tag[at - 1])) || k >= tag.size() ||
+      tag[k] != '=' || k + 1 >= tag.size() || (tag[k + 1] != '"' && tag[k + 1] != '\''))
+    {
+      continue;
+    }
+    const char quote = tag[k + 1];
+    const size_t end = tag.find(quote, k + 2);
+    return end == std::string::npos ? std::string() : tag.substr(k + 2, end - k - 2);
   }
-  const size_t begin = at + key.size();
-  const size_t end = tag.find('"', begin);
-  return end == std::string::npos ? std::string() : tag.substr(begin, end - begin);
+  return std::string();
 }
 
 // A VTK XML file's raw appended data against the file's size: VTK's reader fills the arrays of a
@@ -381,9 +388,10 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
   size_t appended = std::string::npos;
   while (in && appended == std::string::npos && head.size() < (size_t(64) << 20))
   {
+    const size_t from = head.size() > 16 ? head.size() - 16 : 0; // the tag may straddle reads
     in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
     head.append(chunk.data(), static_cast<size_t>(in.gcount()));
-    appended = head.find("<AppendedData");
+    appended = head.find("<AppendedData", from);
   }
   if (appended == std::string::npos)
   {
@@ -413,7 +421,8 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
   {
     return true;
   }
-  const double start = static_cast<double>(underscore + 1);
+  const uint64_t size = static_cast<uint64_t>(fileSize);
+  const uint64_t start = underscore + 1;
   const int headerBytes = TagAttribute(file, "header_type") == "UInt64" ? 8 : 4;
   const bool bigEndian = TagAttribute(file, "byte_order") == "BigEndian";
   for (size_t tag = head.find("<DataArray"); tag < appended; tag = head.find("<DataArray", tag + 1))
@@ -424,50 +433,54 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
       break;
     }
     const std::string array = head.substr(tag, tagEnd - tag);
-    if (TagAttribute(array, "format") != "appended")
+    const std::string text = TagAttribute(array, "offset");
+    if (TagAttribute(array, "format") != "appended" || text.empty())
     {
-      continue;
+      continue; // not appended, or no offset: VTK's reader says what is wrong
     }
     const std::string name = TagAttribute(array, "Name");
-    const std::string text = TagAttribute(array, "offset");
-    const std::string what = name.empty() ? "the unnamed array at appended offset " + text
-                                          : "array '" + name + "'";
-    char* end = nullptr;
-    const double offset = std::strtod(text.c_str(), &end);
-    while (end && std::isspace(static_cast<unsigned char>(*end)))
+    const std::string what = name.empty() ? "an unnamed array" : "array '" + name + "'";
+    // VTK reads the offset as a decimal integer; a sign, a fraction or an exponent is none.
+    size_t first = 0, last = text.size();
+    while (first < last && std::isspace(static_cast<unsigned char>(text[first])))
     {
-      ++end;
+      ++first;
     }
-    if (text.empty() || *end != '\0' || !(offset >= 0.0))
+    while (last > first && std::isspace(static_cast<unsigned char>(text[last - 1])))
+    {
+      --last;
+    }
+    uint64_t offset = 0;
+    const auto parsed = std::from_chars(text.data() + first, text.data() + last, offset);
+    if (first == last || parsed.ec != std::errc() || parsed.ptr != text.data() + last)
     {
       error = fileName + ": " + what + ": offset '" + text +
         "' into the appended data is not a byte count from its start";
       return false;
     }
-    const double at = start + offset;
-    if (at + headerBytes > fileSize)
+    if (offset > size || start + offset + headerBytes > size)
     {
-      error = fileName + ": " + what + " starts at byte " +
-        std::to_string(static_cast<long long>(at)) + ", past the end of the file (" +
-        std::to_string(static_cast<long long>(fileSize)) + " bytes): the file is cut short";
+      error = fileName + ": " + what + " starts at appended offset " + text +
+        ", past the end of the file (" + std::to_string(size) + " bytes): the file is cut short";
       return false;
     }
+    const uint64_t at = start + offset;
     unsigned char bytes[8] = { 0 };
     in.clear();
     in.seekg(static_cast<std::streamoff>(at));
     in.read(reinterpret_cast<char*>(bytes), headerBytes);
-    double count = 0.0;
+    uint64_t count = 0;
     for (int b = 0; b < headerBytes; ++b)
     {
       const int i = bigEndian ? b : headerBytes - 1 - b;
-      count = count * 256.0 + bytes[i];
+      count = (count << 8) | bytes[i];
     }
-    if (at + headerBytes + count > fileSize)
+    if (count > size || at + headerBytes + count > size)
     {
-      error = fileName + ": " + what + " holds " + std::to_string(static_cast<long long>(count)) +
-        " bytes from byte " + std::to_string(static_cast<long long>(at + headerBytes)) +
-        ", but the file ends at byte " + std::to_string(static_cast<long long>(fileSize)) +
-        ": the file is cut short";
+      error = fileName + ": " + what + " at appended offset " + std::to_string(offset) +
+        " holds " + std::to_string(count) + " bytes from byte " +
+        std::to_string(at + headerBytes) + ", but the file ends at byte " +
+        std::to_string(size) + ": the file is cut short";
       return false;
     }
   }

@@ -18,7 +18,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -67,8 +66,8 @@ std::string_view Trim(std::string_view s)
 }
 
 // The whole field must be a number; a leading '+' is accepted (strtod accepts it, from_chars not).
-// A number below the smallest double (1e-400) reads as what strtod makes of it (0 or a denormal);
-// one beyond the largest (1e400) is none: `outOfRange` says which failure it was.
+// A number below the smallest double (1e-400) reads as a signed zero (denormals are read as
+// such); one beyond the largest (1e400) is none: `outOfRange` says which failure it was.
 bool ParseNumber(std::string_view field, double& value, bool* outOfRange = nullptr)
 {
   if (outOfRange)
@@ -90,10 +89,12 @@ bool ParseNumber(std::string_view field, double& value, bool* outOfRange = nullp
   }
   if (result.ec == std::errc::result_out_of_range)
   {
-    const double read = std::strtod(std::string(field).c_str(), nullptr);
-    if (std::isfinite(read))
+    // Underflow (a negative exponent) rounds to a signed zero; overflow is no number. Told apart
+    // by the exponent's sign, not by strtod, which reads the current locale's decimal point.
+    const size_t e = field.find_first_of("eE");
+    if (e != std::string_view::npos && e + 1 < field.size() && field[e + 1] == '-')
     {
-      value = read; // underflow
+      value = field.front() == '-' ? -0.0 : 0.0;
       return true;
     }
     if (outOfRange)
@@ -642,16 +643,17 @@ int vtkPointCloudTextReader::RequestData(
     {
       line.remove_suffix(1);
     }
-    if (line.find('\r') != std::string_view::npos)
-    {
-      return fail(Problem{ vtkErrorCode::FileFormatError, lineNumber,
-        "a carriage return inside the line: the file's lines end in CR alone (old Mac text); "
-        "convert them to LF (tr '\\r' '\\n')" });
-    }
     const std::string_view trimmed = Trim(line);
     if (trimmed.empty() || trimmed.front() == '#')
     {
       continue;
+    }
+    // A carriage return with data after it (trailing ones are trimmed as whitespace).
+    if (trimmed.find('\r') != std::string_view::npos)
+    {
+      return fail(Problem{ vtkErrorCode::FileFormatError, lineNumber,
+        "a carriage return inside the line: the file's lines end in CR alone (old Mac text); "
+        "convert them to LF (tr '\\r' '\\n')" });
     }
     const vtkIdType before = parse.NumberOfPoints();
     if (!parse.Line(trimmed, lineNumber))

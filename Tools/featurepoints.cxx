@@ -570,14 +570,17 @@ int Rank = 0;
 // device, a closed descriptor) fails the run, as the output's would.
 int FinishStandardOutput(int code, const std::string& output)
 {
-  if (std::fflush(stdout) == 0 && !std::ferror(stdout))
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (flushed && !std::ferror(stdout))
   {
     return code;
   }
-  const int error = errno;
   std::fprintf(stderr,
     "featurepoints: standard output: cannot write the summary (%s); %s was written\n",
-    std::strerror(error), vtkPointCloudIO::OneLine(output).c_str());
+    !flushed && error ? std::strerror(error) : "write error",
+    vtkPointCloudIO::OneLine(output).c_str());
   return code == ExitSuccess ? ExitFailure : code;
 }
 
