@@ -38,6 +38,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -481,6 +482,45 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
         " holds " + std::to_string(count) + " bytes from byte " +
         std::to_string(at + headerBytes) + ", but the file ends at byte " +
         std::to_string(size) + ": the file is cut short";
+      return false;
+    }
+    // The points of a piece: as many as its NumberOfPoints (VTK reads that many and drops or
+    // leaves unread the rest).
+    const size_t piece = head.rfind("<Piece", tag);
+    const size_t points = head.rfind("<Points", tag);
+    if (piece == std::string::npos || points == std::string::npos || points < piece ||
+      head.find("</Points>", points) < tag)
+    {
+      continue;
+    }
+    const std::string pieceTag = head.substr(piece, head.find('>', piece) - piece);
+    const std::string declared = TagAttribute(pieceTag, "NumberOfPoints");
+    const std::string type = TagAttribute(array, "type");
+    const std::map<std::string, int> sizes = { { "Float32", 4 }, { "Float64", 8 }, { "Int8", 1 },
+      { "UInt8", 1 }, { "Int16", 2 }, { "UInt16", 2 }, { "Int32", 4 }, { "UInt32", 4 },
+      { "Int64", 8 }, { "UInt64", 8 } };
+    const auto bytesPerValue = sizes.find(type);
+    uint64_t n = 0, components = 3;
+    const auto parsedPoints =
+      std::from_chars(declared.data(), declared.data() + declared.size(), n);
+    const std::string componentsText = TagAttribute(array, "NumberOfComponents");
+    if (!componentsText.empty())
+    {
+      const char* c = componentsText.data();
+      std::from_chars(c, c + componentsText.size(), components);
+    }
+    if (bytesPerValue == sizes.end() || parsedPoints.ec != std::errc() || components == 0 ||
+      components > 64)
+    {
+      continue; // VTK's reader says what is wrong with those
+    }
+    const uint64_t per = components * static_cast<uint64_t>(bytesPerValue->second);
+    if (n > count / per || n * per != count)
+    {
+      error = fileName + ": a piece declares NumberOfPoints=\"" + declared +
+        "\", but its Points array holds " + std::to_string(count) + " bytes, " +
+        (count % per == 0 ? std::to_string(count / per) + (count == per ? " point" : " points")
+                          : std::string("not a whole number of points"));
       return false;
     }
   }

@@ -341,6 +341,18 @@ void FuzzedFiles()
     ExpectFailure("a raw appended VTP cut short", { Path("raw-cut.vtp"), Path("o.csv") }, 1,
       "but the file ends at byte " + std::to_string(whole.size() - 1000) +
         ": the file is cut short");
+    // NumberOfPoints below the Points array's size: VTK reads the first ones and says nothing.
+    std::string fewer = whole;
+    const size_t declared = fewer.find("NumberOfPoints=\"1500\"");
+    Check(declared != std::string::npos, "raw.vtp: no NumberOfPoints=\"1500\"");
+    if (declared != std::string::npos)
+    {
+      fewer.replace(declared, 22, "NumberOfPoints=\"1400\"");
+      Spit(Path("raw-fewer.vtp"), fewer);
+      ExpectFailure("a raw appended VTP declaring fewer points", { Path("raw-fewer.vtp"),
+        Path("o.csv") }, 1, "a piece declares NumberOfPoints=\"1400\", but its Points array "
+                            "holds 36000 bytes, 1500 points");
+    }
     ::unlink(Path("raw.csv").c_str());
   }
   // Array names a CSV header would repeat or read as components: an input array named x (a CSV
