@@ -187,9 +187,9 @@ int vtkPointCloudLASReader::RequestData(
   }
   if (headerSize > fileSize)
   {
-    return bad("the file ends in the LAS " + std::to_string(major) + "." +
-      std::to_string(minor) + " header (" + std::to_string(headerSize) +
-      " bytes, the file has " + std::to_string(fileSize) + ")");
+    return bad("the LAS " + std::to_string(major) + "." + std::to_string(minor) +
+      " header's size field says " + std::to_string(headerSize) + " bytes, more than the file's " +
+      std::to_string(fileSize) + " (a file cut short, or a corrupt field)");
   }
   const uint64_t pointOffset = Load<uint32_t>(header + OffsetToPointDataAt, swap);
   if (pointOffset < headerSize || pointOffset > fileSize)

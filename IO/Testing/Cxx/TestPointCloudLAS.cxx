@@ -274,7 +274,7 @@ void Malformed()
     { "header-size.las", with([](File& f) { f.HeaderSize = 100; }),
       "header size 100 is impossible for LAS 1.2" },
     { "header-cut.las", with([](File& f) { f.Minor = 3; }).substr(0, 230),
-      "the file ends in the LAS 1.3 header (235 bytes, the file has 230)" },
+      "the LAS 1.3 header's size field says 235 bytes, more than the file's 230" },
     { "scale-zero.las", with([](File& f) { f.Scale[1] = 0; }), "y scale factor 0" },
     { "scale-nan.las", with([](File& f) { f.Scale[2] = std::nan(""); }), "z scale factor nan" },
     { "scale-huge.las", with([](File& f) { f.Scale[0] = 1e300; }), "overflow double precision" },
