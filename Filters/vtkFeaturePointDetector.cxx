@@ -1019,15 +1019,21 @@ void vtkFeaturePointDetector::WarnIfDegenerate(
   // The RMS distances from the principal line and from the principal plane, summed point by
   // point: a small eigenvalue of the covariance is lost in the rounding of a large one (two
   // surfaces 1e12 apart), a distance is not.
-  const Eigen::Vector2d squares = sumOverValid(Eigen::Vector2d(Eigen::Vector2d::Zero()),
-    [&mean, &axes](const Eigen::Vector3d& p) -> Eigen::Vector2d {
+  // The spread across the principal line, as the covariance of the two coordinates across it
+  // (its small eigenvalues come out right there, apart from the line's large one): its trace is
+  // the squared distance from the line, its smallest eigenvalue the squared distance from the
+  // principal plane.
+  const Eigen::Vector3d across[2] = { axes.col(0), axes.col(1) };
+  const Eigen::Matrix2d spread = sumOverValid(Eigen::Matrix2d(Eigen::Matrix2d::Zero()),
+    [&mean, &across](const Eigen::Vector3d& p) -> Eigen::Matrix2d {
       const Eigen::Vector3d v = p - mean;
-      const double a0 = v.dot(axes.col(0)), a1 = v.dot(axes.col(1));
-      return Eigen::Vector2d(a0 * a0 + a1 * a1, a0 * a0);
+      const Eigen::Vector2d a(v.dot(across[0]), v.dot(across[1]));
+      return a * a.transpose();
     });
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> flat(spread, Eigen::EigenvaluesOnly);
   const double count = std::max(sum[3], 1.0);
-  const double fromLine = std::sqrt(squares[0] / count);
-  const double fromPlane = std::sqrt(squares[1] / count);
+  const double fromLine = std::sqrt(std::max(spread.trace(), 0.0) / count);
+  const double fromPlane = std::sqrt(std::max(flat.eigenvalues()[0], 0.0) / count);
   // Degenerate where those distances are below what the coordinates resolve (a few units in
   // their last place at the cloud's largest coordinate), not merely small beside the extent.
   const double unit = dataType == VTK_FLOAT ? std::numeric_limits<float>::epsilon()

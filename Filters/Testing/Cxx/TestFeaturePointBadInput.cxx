@@ -189,6 +189,18 @@ int TestFeaturePointBadInput(int, char*[])
     }
     Outcome o = Run(p);
     expect("two sheets 1e12 apart", o, nullptr, 8000);
+    // The same with both sheets flat, on one plane: that is one plane.
+    vtkNew<vtkPoints> flat;
+    flat->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < 8000; ++i)
+    {
+      c.Data->GetPoint(i, x);
+      const double shift = i < 4000 ? 1e12 : 0.0;
+      flat->InsertNextPoint(x[0] + shift, x[1] + shift, 0.0);
+    }
+    Outcome coplanar = Run(flat);
+    FP_CHECK(coplanar.Message.find("one plane") != std::string::npos,
+      "two flat sheets 1e12 apart on one plane: %s", coplanar.Message.c_str());
     FP_CHECK(o.Message.find("straight line") == std::string::npos &&
         o.Message.find("one plane") == std::string::npos,
       "two sheets 1e12 apart: %s", o.Message.c_str());
