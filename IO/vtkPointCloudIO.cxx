@@ -377,6 +377,61 @@ std::string TagAttribute(const std::string& tag, const std::string& name)
   return std::string();
 }
 
+// A legacy VTK file's POINTS line against the file's size: a count that is not a whole number of
+// 0 or more (VTK's reader then reads the count as a keyword, "Unrecognized keyword: 0"), or more
+// points than the file's bytes can hold (VTK's reader allocates them all before it finds the file
+// short). The header is searched in the file's first 64 KiB; a file without a POINTS line there
+// passes, for VTK's reader to judge.
+bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string& error)
+{
+  std::ifstream file(fileName, std::ios::binary);
+  std::string head(size_t(64) << 10, '\0');
+  file.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(file.gcount()));
+  std::istringstream in(head);
+  std::string line;
+  bool binary = false;
+  for (int number = 1; std::getline(in, line); ++number)
+  {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    std::transform(keyword.begin(), keyword.end(), keyword.begin(),
+      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    if (number == 3)
+    {
+      binary = keyword == "BINARY";
+    }
+    if (number < 4 || keyword != "POINTS")
+    {
+      continue;
+    }
+    std::string count;
+    words >> count;
+    const bool digits = !count.empty() &&
+      std::all_of(count.begin(), count.end(), [](unsigned char c) { return std::isdigit(c); });
+    if (!digits || count.size() > 19)
+    {
+      error = fileName + ":" + std::to_string(number) + ": the POINTS line declares '" + count +
+        "' points, not a whole number of 0 or more";
+      return false;
+    }
+    const double points = std::stod(count);
+    // At least 3 bytes a number in ASCII (a digit and a separator, 3 numbers a point: 6 bytes a
+    // point); 4 bytes a number in binary (float, the smallest type VTK writes for points).
+    const double least = points * (binary ? 12.0 : 6.0);
+    if (least > fileSize)
+    {
+      error = fileName + ":" + std::to_string(number) + ": the POINTS line declares " + count +
+        " points, more than the file's " + std::to_string(static_cast<long long>(fileSize)) +
+        " bytes can hold (a file cut short, or a corrupt count)";
+      return false;
+    }
+    return true;
+  }
+  return true;
+}
+
 // A VTK XML file's raw appended data against the file's size: VTK's reader fills the arrays of a
 // file cut short (or an offset before the data) with zeros or with the bytes around, and says
 // nothing. Each uncompressed array's block (its byte count, then its bytes) must lie within the
@@ -704,6 +759,10 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   const bool vtkFormat = extension == "vtp" || extension == "vtu" || extension == "vtk";
   if ((extension == "vtp" || extension == "vtu") &&
     !CheckAppendedData(fileName, static_cast<double>(info.st_size), error))
+  {
+    return nullptr;
+  }
+  if (extension == "vtk" && !CheckLegacyPoints(fileName, static_cast<double>(info.st_size), error))
   {
     return nullptr;
   }

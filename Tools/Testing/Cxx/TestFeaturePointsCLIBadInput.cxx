@@ -281,7 +281,8 @@ void HugeCounts()
     "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 1000000000000 float\n0 0 0 "
     "1 0 0 0 1 0\n");
   ExpectFailure("legacy VTK declaring 10^12 points", { Path("huge.vtk"), Path("o.vtp") }, 1,
-    "huge.vtk: cannot read: Unable to allocate");
+    "huge.vtk:5: the POINTS line declares 1000000000000 points, more than the file's 97 bytes can "
+    "hold");
   Spit(Path("huge.ply"),
     "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\nproperty float x\n"
     "property float y\nproperty float z\nend_header\n" + std::string(120, '\0'));
@@ -498,6 +499,9 @@ void LegacyFiles()
   Spit(Path("nan.vtk"), header + "POINTS 4 float\n0 0 0 1 nan 0 0 1 0\n0 0 1\n");
   ExpectFailure("legacy VTK with a nan token", { Path("nan.vtk"), Path("o.vtp") }, 1,
     "nan.vtk: cannot read");
+  Spit(Path("negative.vtk"), header + "POINTS -1 float\n0 0 0\n");
+  ExpectFailure("legacy VTK declaring -1 points", { Path("negative.vtk"), Path("o.vtp") }, 1,
+    "negative.vtk:5: the POINTS line declares '-1' points, not a whole number of 0 or more");
   std::mt19937 rng(5);
   std::string garbage(3000, '\0');
   for (char& c : garbage)
