@@ -481,6 +481,25 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
   const uint64_t start = underscore + 1;
   const int headerBytes = TagAttribute(file, "header_type") == "UInt64" ? 8 : 4;
   const bool bigEndian = TagAttribute(file, "byte_order") == "BigEndian";
+  // Every array's offset, in order: no block may run into the next one.
+  std::vector<uint64_t> starts;
+  for (size_t tag = head.find("<DataArray"); tag < appended; tag = head.find("<DataArray", tag + 1))
+  {
+    const size_t tagEnd = head.find('>', tag);
+    if (tagEnd == std::string::npos || tagEnd > appended)
+    {
+      break;
+    }
+    const std::string array = head.substr(tag, tagEnd - tag);
+    const std::string text = TagAttribute(array, "offset");
+    uint64_t offset = 0;
+    if (TagAttribute(array, "format") == "appended" &&
+      std::from_chars(text.data(), text.data() + text.size(), offset).ec == std::errc())
+    {
+      starts.push_back(offset);
+    }
+  }
+  std::sort(starts.begin(), starts.end());
   for (size_t tag = head.find("<DataArray"); tag < appended; tag = head.find("<DataArray", tag + 1))
   {
     const size_t tagEnd = head.find('>', tag);
@@ -530,6 +549,23 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
     {
       const int i = bigEndian ? b : headerBytes - 1 - b;
       count = (count << 8) | bytes[i];
+    }
+    // The next block: a size field read with the wrong width (header_type UInt64 over 4-byte
+    // sizes takes the next 4 bytes, the data's first, into the size) or a corrupt size runs
+    // into it, and VTK's reader reads the data shifted.
+    const auto next = std::upper_bound(starts.begin(), starts.end(), offset);
+    if (next != starts.end() && (*next - offset < static_cast<uint64_t>(headerBytes) ||
+                                  count > *next - offset - headerBytes))
+    {
+      const uint64_t room = *next - offset > static_cast<uint64_t>(headerBytes)
+        ? *next - offset - headerBytes
+        : 0;
+      error = fileName + ": " + what + " at appended offset " + std::to_string(offset) + " holds " +
+        std::to_string(count) + " bytes after its " + std::to_string(headerBytes) +
+        "-byte size, more than the " + std::to_string(room) + " bytes before the next block, at " +
+        "offset " + std::to_string(*next) + ": its size field (header_type " +
+        (headerBytes == 8 ? "UInt64" : "UInt32") + ") does not match the data";
+      return false;
     }
     if (count > size || at + headerBytes + count > size)
     {

@@ -355,6 +355,40 @@ void FuzzedFiles()
                             "holds 36000 bytes, 1500 points");
     }
     ::unlink(Path("raw.csv").c_str());
+    // 4-byte size fields under header_type="UInt64": each size takes in the 4 bytes after it.
+    // Where those are zeros (an array whose first value is 0), the size reads right and VTK's
+    // reader reads the data 4 bytes late; the block then runs into the next one.
+    part->Update();
+    vtkNew<vtkPolyData> zeros;
+    zeros->SetPoints(part->GetOutput()->GetPoints());
+    vtkNew<vtkFloatArray> w;
+    w->SetName("w");
+    w->SetNumberOfTuples(zeros->GetNumberOfPoints());
+    w->FillValue(0.0f);
+    zeros->GetPointData()->AddArray(w);
+    vtkNew<vtkXMLPolyDataWriter> narrow;
+    narrow->SetInputData(zeros);
+    narrow->SetFileName(Path("raw32.vtp").c_str());
+    narrow->SetDataModeToAppended();
+    narrow->EncodeAppendedDataOff();
+    narrow->SetCompressorTypeToNone();
+    narrow->SetHeaderTypeToUInt32();
+    narrow->Write();
+    ExpectSuccess("a raw appended VTP with 4-byte sizes", { Path("raw32.vtp"), Path("raw.csv"),
+                                                            "--quiet" });
+    std::string wide = Slurp(Path("raw32.vtp"));
+    const size_t header = wide.find("header_type=\"UInt32\"");
+    Check(header != std::string::npos, "raw32.vtp: no header_type=\"UInt32\"");
+    if (header != std::string::npos)
+    {
+      wide.replace(header, 20, "header_type=\"UInt64\"");
+      Spit(Path("raw32-as-64.vtp"), wide);
+      ExpectFailure("4-byte sizes read as 8-byte ones", { Path("raw32-as-64.vtp"),
+        Path("o.csv") }, 1, "array 'w' at appended offset 0 holds 6000 bytes after its 8-byte size, "
+                            "more than the 5996 bytes before the next block, at offset 6004: its "
+                            "size field (header_type UInt64) does not match the data");
+    }
+    ::unlink(Path("raw.csv").c_str());
   }
   // Array names a CSV header would repeat or read as components: an input array named x (a CSV
   // header with x twice), one-component arrays named "Normals:0" and "t:1" beside the output's own
