@@ -330,8 +330,10 @@ struct TextParse
   std::vector<std::string_view> Fields;
   long ReferenceLine = 0; // the header, or the first data line: it fixes the number of fields
   bool ReferenceIsHeader = false;
-  long CountLine = 0;
-  long long DeclaredCount = -1;
+  long CountLine = 0;            // the first PTS count line
+  long long DeclaredCount = -1;  // the points all the count lines declare
+  long long ScanEnd = -1;        // the number of points at which the current PTS scan ends
+  int Scans = 0;
   bool First = true;
   Problem Stop;
 
@@ -352,9 +354,10 @@ struct TextParse
   // A line that is not empty nor a comment, trimmed.
   bool Line(std::string_view trimmed, long number)
   {
-    if (this->Format == vtkPointCloudTextReader::PTS && this->CountLine == 0)
+    if (this->Format == vtkPointCloudTextReader::PTS &&
+      (this->CountLine == 0 || (this->NumberOfPoints() == this->ScanEnd && IsCount(trimmed))))
     {
-      return this->Count(trimmed, number);
+      return this->Count(trimmed, number); // the first scan's count, or the next scan's
     }
     if (this->First)
     {
@@ -390,9 +393,25 @@ struct TextParse
       return this->Fail(vtkErrorCode::FileFormatError, number,
         "the PTS count line says " + std::string(trimmed) + " points: more than any file holds");
     }
-    this->DeclaredCount = static_cast<long long>(count);
-    this->CountLine = number;
+    const long long points = static_cast<long long>(count);
+    if (this->DeclaredCount > 4611686018427387904LL - points)
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, number,
+        "the PTS count lines say more points than any file holds");
+    }
+    this->DeclaredCount = std::max(this->DeclaredCount, 0LL) + points;
+    this->ScanEnd = this->NumberOfPoints() + points;
+    this->CountLine = this->CountLine == 0 ? number : this->CountLine;
+    ++this->Scans;
     return true;
+  }
+
+  // A line that is one whole number of 0 or more: a PTS scan's count (a file of several scans
+  // has one before each).
+  static bool IsCount(std::string_view trimmed)
+  {
+    return !trimmed.empty() &&
+      std::all_of(trimmed.begin(), trimmed.end(), [](char c) { return c >= '0' && c <= '9'; });
   }
 
   // The first line after any count: the delimiter, and the columns from the header or by
@@ -515,8 +534,11 @@ struct TextParse
     if (this->DeclaredCount >= 0 && this->DeclaredCount != n)
     {
       return this->Fail(vtkErrorCode::FileFormatError, this->CountLine,
-        "the count line says " + std::to_string(this->DeclaredCount) +
-          " points but the file has " + std::to_string(n));
+        this->Scans > 1 ? "the count lines of its " + std::to_string(this->Scans) + " scans say " +
+            std::to_string(this->DeclaredCount) + " points in all but the file has " +
+            std::to_string(n)
+                        : "the count line says " + std::to_string(this->DeclaredCount) +
+            " points but the file has " + std::to_string(n));
     }
     if (n == 0 && this->Format != vtkPointCloudTextReader::PTS)
     {

@@ -1,7 +1,8 @@
 /**
  * @class   vtkPointCloudTextReader
  * @brief   Reads a point cloud from a text file: XYZ/TXT (whitespace separated), CSV (with or
- *          without a header) or PTS (Leica: a point count, then x y z [intensity] [r g b]).
+ *          without a header) or PTS (Leica: a point count, then x y z [intensity] [r g b]; a file of
+ *          several scans has a count line before each).
  *
  * One point per line; the first three columns are x, y, z unless a header names them. Every
  * other column becomes a point-data array, so nothing in the file is lost:

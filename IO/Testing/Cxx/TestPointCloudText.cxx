@@ -118,6 +118,15 @@ int TestPointCloudText(int argc, char* argv[])
         rgb->GetValue(5) == 7,
       "scan.pts: RGB as unsigned char active scalars");
   }
+  {
+    // Several scans, each after its own count line (an empty scan too).
+    Read r(Write(folder, "scans.pts",
+      "2\n0 0 0 -120 10 20 30\n1 1 1 5 255 0 7\n0\n1\n2 2 2 7 1 2 3\n"));
+    Check(r.Error.empty() && r.Output->GetNumberOfPoints() == 3, "scans.pts: " + r.Error);
+    Check(r.Output && r.Output->GetNumberOfPoints() == 3 && r.Output->GetPoint(2)[0] == 2 &&
+        r.Value("Intensity", 2) == 7,
+      "scans.pts: the third point");
+  }
 
   // Malformed files: the line and the problem in the message, and no points.
   ExpectError(folder, "word.xyz", "1 2 3\n4 five 6\n", ":2: field 2 ('five') is not a number");
@@ -143,6 +152,8 @@ int TestPointCloudText(int argc, char* argv[])
   ExpectError(folder, "noxyz.csv", "a,b,c\n1,2,3\n", "names no x, y and z");
   ExpectError(folder, "comments.txt", "# nothing\n\n", "holds no point");
   ExpectError(folder, "count.pts", "3\n0 0 0\n1 1 1\n", ":1: the count line says 3 points but the file has 2");
+  ExpectError(folder, "scans.pts", "1\n0 0 0\n2\n1 1 1\n",
+    ":1: the count lines of its 2 scans say 3 points in all but the file has 2");
   ExpectError(folder, "nocount.pts", "0 0 0\n", "starts with its number of points");
   ExpectError(folder, "colour.pts", "1\n0 0 0 1 300 0 0\n", "not a colour value");
   {
