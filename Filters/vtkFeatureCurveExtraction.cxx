@@ -1153,13 +1153,18 @@ void CurveRun::BridgeAlongCreases()
     bool crease = gap.Straight && whole.Valid && whole.Angle >= std::asin(MinimumCreaseAngle) &&
       std::abs(whole.Difference) > CreaseSignificance * whole.Error;
     const int tests = static_cast<int>(std::ceil(gap.Length / this->R));
+    // One flat-looking window among many is what the noise gives: the significance of each of
+    // the tests + 1 windows is raised so that all of them together mistake a crease for flat as
+    // rarely as one test at CreaseSignificance (a Gaussian tail divided by m adds 2 ln m to z^2).
+    const double significance =
+      std::sqrt(CreaseSignificance * CreaseSignificance + 2.0 * std::log(tests + 1.0));
     for (int k = 0; crease && k <= tests; ++k)
     {
       const V3 x = a + (gap.Length * k / tests) * t;
       const Bend local = this->BendAt(x, t, this->R, u, true);
       const double offCrease = std::abs(local.Difference - whole.Difference);
       crease = local.Valid &&
-        !(offCrease > std::abs(local.Difference) && offCrease > CreaseSignificance * local.Error);
+        !(offCrease > std::abs(local.Difference) && offCrease > significance * local.Error);
     }
     const bool border = !crease && this->BorderAlong(a, t, gap.Length);
     std::vector<V3> bridge;
