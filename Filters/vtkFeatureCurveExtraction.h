@@ -46,7 +46,8 @@
  *    differ in slope by a crease's angle (10 degrees) and by more than 3 standard errors (from
  *    the faces' residuals: the cloud's own noise), and no stretch of 2 FitRadius s along it looks
  *    flat (a bend nearer to none than to the gap's, and off the latter by more than 3 of its own
- *    errors, raised for the number of stretches tested: one in many looks flat by chance). The detector misses stretches of shallow creases; the cloud still shows them.
+ *    errors, raised for the number of stretches tested: one in many looks flat by chance). The
+ *    detector misses stretches of shallow creases; the cloud still shows them.
  *    Two free border ends that face each other within 30 degrees are joined where the cloud ends
  *    at the gap's line all along it: at every FitRadius s, the points within 2 FitRadius s lie on
  *    one side of the line in their tangent plane (the same side throughout), none beyond it by
