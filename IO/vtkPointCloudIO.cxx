@@ -45,6 +45,7 @@
 #include <random>
 #include <stdexcept>
 #include <csignal>
+#include <set>
 #include <sstream>
 // POSIX where vtksys has no counterpart: the isolated reader (fork, memfd_create, prctl, setrlimit,
 // alarm, waitpid), the exclusive creation of temporary files (open with O_EXCL), the one stat()
@@ -362,26 +363,81 @@ std::string TemporaryName(const std::string& prefix)
 // before the name, either quote.
 std::string TagAttribute(const std::string& tag, const std::string& name)
 {
-  for (size_t at = tag.find(name); at != std::string::npos; at = tag.find(name, at + 1))
+  // The tag's name, then attributes name = "value" (either quote; spaces around '='): a name is
+  // only ever matched as an attribute's name, never inside another attribute's value.
+  auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  size_t at = tag.find_first_of(" \t\r\n");
+  while (at < tag.size())
   {
-    size_t k = at + name.size();
-    if (at == 0 || !std::isspace(static_cast<unsigned char>(tag[at - 1])) || k >= tag.size() ||
-      tag[k] != '=' || k + 1 >= tag.size() || (tag[k + 1] != '"' && tag[k + 1] != '\''))
+    while (at < tag.size() && space(tag[at]))
     {
-      continue;
+      ++at;
     }
-    const char quote = tag[k + 1];
-    const size_t end = tag.find(quote, k + 2);
-    return end == std::string::npos ? std::string() : tag.substr(k + 2, end - k - 2);
+    const size_t nameStart = at;
+    while (at < tag.size() && !space(tag[at]) && tag[at] != '=')
+    {
+      ++at;
+    }
+    const std::string attribute = tag.substr(nameStart, at - nameStart);
+    while (at < tag.size() && space(tag[at]))
+    {
+      ++at;
+    }
+    if (at >= tag.size() || tag[at] != '=')
+    {
+      continue; // a name without a value: none of ours
+    }
+    ++at;
+    while (at < tag.size() && space(tag[at]))
+    {
+      ++at;
+    }
+    if (at >= tag.size() || (tag[at] != '"' && tag[at] != '\''))
+    {
+      return std::string();
+    }
+    const char quote = tag[at];
+    const size_t end = tag.find(quote, at + 1);
+    if (end == std::string::npos)
+    {
+      return std::string();
+    }
+    if (attribute == name)
+    {
+      return tag.substr(at + 1, end - at - 1);
+    }
+    at = end + 1;
   }
   return std::string();
+}
+
+// An appended array's offset as VTK's reader reads it (a stream extraction): spaces around it and
+// a leading '+' allowed. False for anything else: a sign, a fraction, an exponent, other text.
+bool ParseOffset(const std::string& text, uint64_t& offset)
+{
+  size_t first = 0, last = text.size();
+  while (first < last && std::isspace(static_cast<unsigned char>(text[first])))
+  {
+    ++first;
+  }
+  while (last > first && std::isspace(static_cast<unsigned char>(text[last - 1])))
+  {
+    --last;
+  }
+  if (first < last && text[first] == '+')
+  {
+    ++first;
+  }
+  const auto parsed = std::from_chars(text.data() + first, text.data() + last, offset);
+  return first < last && parsed.ec == std::errc() && parsed.ptr == text.data() + last;
 }
 
 // A legacy VTK file's POINTS line against the file's size: a count that is not a whole number of
 // 0 or more (VTK's reader then reads the count as a keyword, "Unrecognized keyword: 0"), or more
 // points than the file's bytes can hold (VTK's reader allocates them all before it finds the file
-// short). The header is searched in the file's first 64 KiB; a file without a POINTS line there
-// passes, for VTK's reader to judge.
+// short). The line is the data set's: `POINTS n type` after the DATASET line, before any FIELD
+// data (whose arrays, and strings in them, may hold such a line too; a file with field data there
+// is left to VTK's reader, under the memory limit of ReadIsolated), in the file's first 64 KiB.
 bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string& error)
 {
   std::ifstream file(fileName, std::ios::binary);
@@ -390,33 +446,61 @@ bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string
   head.resize(static_cast<size_t>(file.gcount()));
   std::istringstream in(head);
   std::string line;
-  bool binary = false;
+  bool binary = false, dataset = false;
+  auto upper = [](std::string word) {
+    std::transform(word.begin(), word.end(), word.begin(),
+      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return word;
+  };
+  static const std::set<std::string> types = { "BIT", "CHAR", "UNSIGNED_CHAR", "SHORT",
+    "UNSIGNED_SHORT", "INT", "UNSIGNED_INT", "LONG", "UNSIGNED_LONG", "VTKTYPEINT64",
+    "VTKTYPEUINT64", "FLOAT", "DOUBLE" };
   for (int number = 1; std::getline(in, line); ++number)
   {
     std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
-    std::transform(keyword.begin(), keyword.end(), keyword.begin(),
-      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    std::vector<std::string> word;
+    for (std::string w; words >> w;)
+    {
+      word.push_back(w);
+    }
+    const std::string keyword = word.empty() ? std::string() : upper(word[0]);
     if (number == 3)
     {
       binary = keyword == "BINARY";
     }
-    if (number < 4 || keyword != "POINTS")
+    if (number < 4)
     {
       continue;
     }
-    std::string count;
-    words >> count;
-    const bool digits = !count.empty() &&
-      std::all_of(count.begin(), count.end(), [](unsigned char c) { return std::isdigit(c); });
-    if (!digits || count.size() > 19)
+    dataset = dataset || keyword == "DATASET";
+    if (!dataset)
+    {
+      continue;
+    }
+    if (keyword == "FIELD" || keyword == "POINT_DATA" || keyword == "CELL_DATA")
+    {
+      return true; // data follows whose bytes this check does not read
+    }
+    if (keyword != "POINTS" || word.size() != 3 || !types.count(upper(word[2])))
+    {
+      continue;
+    }
+    // VTK reads the count with a stream extraction: a leading '+' and leading zeros pass.
+    std::string count = word[1];
+    size_t first = count[0] == '+' ? 1 : 0;
+    const bool digits = first < count.size() &&
+      std::all_of(count.begin() + first, count.end(), [](unsigned char c) { return std::isdigit(c); });
+    while (digits && first + 1 < count.size() && count[first] == '0')
+    {
+      ++first;
+    }
+    if (!digits || count.size() - first > 19)
     {
       error = fileName + ":" + std::to_string(number) + ": the POINTS line declares '" + count +
         "' points, not a whole number of 0 or more";
       return false;
     }
-    const double points = std::stod(count);
+    const double points = std::stod(count.substr(first));
     // At least 3 bytes a number in ASCII (a digit and a separator, 3 numbers a point: 6 bytes a
     // point); 4 bytes a number in binary (float, the smallest type VTK writes for points).
     const double least = points * (binary ? 12.0 : 6.0);
@@ -493,13 +577,28 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
     const std::string array = head.substr(tag, tagEnd - tag);
     const std::string text = TagAttribute(array, "offset");
     uint64_t offset = 0;
-    if (TagAttribute(array, "format") == "appended" &&
-      std::from_chars(text.data(), text.data() + text.size(), offset).ec == std::errc())
+    if (TagAttribute(array, "format") == "appended" && ParseOffset(text, offset))
     {
       starts.push_back(offset);
     }
   }
   std::sort(starts.begin(), starts.end());
+  // The end of the appended data: where its closing tag starts (searched from the file's end: the
+  // raw bytes may hold anything). The last block must end before it.
+  uint64_t dataEnd = size;
+  {
+    const uint64_t tail = std::min<uint64_t>(size, 1 << 16);
+    std::string last(static_cast<size_t>(tail), '\0');
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(size - tail));
+    in.read(&last[0], static_cast<std::streamsize>(tail));
+    last.resize(static_cast<size_t>(in.gcount()));
+    const size_t closing = last.rfind("</AppendedData>");
+    if (closing != std::string::npos && size - tail + closing >= start)
+    {
+      dataEnd = size - tail + closing;
+    }
+  }
   for (size_t tag = head.find("<DataArray"); tag < appended; tag = head.find("<DataArray", tag + 1))
   {
     const size_t tagEnd = head.find('>', tag);
@@ -515,19 +614,8 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
     }
     const std::string name = TagAttribute(array, "Name");
     const std::string what = name.empty() ? "an unnamed array" : "array '" + name + "'";
-    // VTK reads the offset as a decimal integer; a sign, a fraction or an exponent is none.
-    size_t first = 0, last = text.size();
-    while (first < last && std::isspace(static_cast<unsigned char>(text[first])))
-    {
-      ++first;
-    }
-    while (last > first && std::isspace(static_cast<unsigned char>(text[last - 1])))
-    {
-      --last;
-    }
     uint64_t offset = 0;
-    const auto parsed = std::from_chars(text.data() + first, text.data() + last, offset);
-    if (first == last || parsed.ec != std::errc() || parsed.ptr != text.data() + last)
+    if (!ParseOffset(text, offset))
     {
       error = fileName + ": " + what + ": offset '" + text +
         "' into the appended data is not a byte count from its start";
@@ -554,17 +642,20 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
     // sizes takes the next 4 bytes, the data's first, into the size) or a corrupt size runs
     // into it, and VTK's reader reads the data shifted.
     const auto next = std::upper_bound(starts.begin(), starts.end(), offset);
-    if (next != starts.end() && (*next - offset < static_cast<uint64_t>(headerBytes) ||
-                                  count > *next - offset - headerBytes))
+    const bool last = next == starts.end();
+    const uint64_t limit = last ? (dataEnd >= start ? dataEnd - start : 0) : *next;
+    if ((!last || dataEnd < size) && limit >= offset &&
+      (limit - offset < static_cast<uint64_t>(headerBytes) || count > limit - offset - headerBytes))
     {
-      const uint64_t room = *next - offset > static_cast<uint64_t>(headerBytes)
-        ? *next - offset - headerBytes
-        : 0;
+      const uint64_t room =
+        limit - offset > static_cast<uint64_t>(headerBytes) ? limit - offset - headerBytes : 0;
       error = fileName + ": " + what + " at appended offset " + std::to_string(offset) + " holds " +
         std::to_string(count) + " bytes after its " + std::to_string(headerBytes) +
-        "-byte size, more than the " + std::to_string(room) + " bytes before the next block, at " +
-        "offset " + std::to_string(*next) + ": its size field (header_type " +
-        (headerBytes == 8 ? "UInt64" : "UInt32") + ") does not match the data";
+        "-byte size, more than the " + std::to_string(room) + " bytes before " +
+        (last ? std::string("the end of the appended data") :
+                "the next block, at offset " + std::to_string(*next)) +
+        ": its size field (header_type " + (headerBytes == 8 ? "UInt64" : "UInt32") +
+        ") does not match the data";
       return false;
     }
     if (count > size || at + headerBytes + count > size)

@@ -333,6 +333,9 @@ struct TextParse
   long CountLine = 0;            // the first PTS count line
   long long DeclaredCount = -1;  // the points all the count lines declare
   long long ScanEnd = -1;        // the number of points at which the current PTS scan ends
+  long long ScanPoints = 0;      // the points the current PTS scan's count line declares
+  long ScanLine = 0;             // the current PTS scan's count line
+  std::string ScanText;          // its count, as written
   int Scans = 0;
   bool First = true;
   Problem Stop;
@@ -354,8 +357,11 @@ struct TextParse
   // A line that is not empty nor a comment, trimmed.
   bool Line(std::string_view trimmed, long number)
   {
+    double ignored = 0.0;
     if (this->Format == vtkPointCloudTextReader::PTS &&
-      (this->CountLine == 0 || (this->NumberOfPoints() == this->ScanEnd && IsCount(trimmed))))
+      (this->CountLine == 0 ||
+        (this->NumberOfPoints() == this->ScanEnd &&
+          (CountValue(trimmed, ignored) || AllDigits(trimmed)))))
     {
       return this->Count(trimmed, number); // the first scan's count, or the next scan's
     }
@@ -378,40 +384,55 @@ struct TextParse
     return this->Point(number);
   }
 
-  // A PTS file's first line: its number of points.
+  // A PTS scan's count line (the file's first line, and the line before each further scan).
   bool Count(std::string_view trimmed, long number)
   {
+    const std::string text = Shorten(trimmed);
     double count = 0.0;
-    if (!ParseNumber(trimmed, count) || count < 0 || count != std::floor(count))
-    {
-      return this->Fail(vtkErrorCode::FileFormatError, number,
-        "a PTS file starts with its number of points; found '" + std::string(trimmed) + "'");
-    }
     // A count beyond 2^62 would overflow the conversion; no file holds that many points anyway.
-    if (count > 4611686018427387904.0)
+    const bool huge =
+      AllDigits(trimmed) && !(ParseNumber(trimmed, count) && count <= 4611686018427387904.0);
+    if (!huge && !CountValue(trimmed, count))
     {
       return this->Fail(vtkErrorCode::FileFormatError, number,
-        "the PTS count line says " + std::string(trimmed) + " points: more than any file holds");
+        "a PTS file starts with its number of points; found '" + text + "'");
     }
-    const long long points = static_cast<long long>(count);
-    if (this->DeclaredCount > 4611686018427387904LL - points)
+    const long long points = huge ? -1 : static_cast<long long>(count);
+    if (points < 0 || std::max(this->DeclaredCount, 0LL) > 4611686018427387904LL - points)
     {
       return this->Fail(vtkErrorCode::FileFormatError, number,
-        "the PTS count lines say more points than any file holds");
+        "the PTS count line says " + text + " points: more than any file holds");
     }
     this->DeclaredCount = std::max(this->DeclaredCount, 0LL) + points;
     this->ScanEnd = this->NumberOfPoints() + points;
+    this->ScanPoints = points;
+    this->ScanLine = number;
+    this->ScanText = text;
     this->CountLine = this->CountLine == 0 ? number : this->CountLine;
     ++this->Scans;
     return true;
   }
 
-  // A line that is one whole number of 0 or more: a PTS scan's count (a file of several scans
-  // has one before each).
-  static bool IsCount(std::string_view trimmed)
+  // A field that reads as a PTS count: a whole number of 0 or more.
+  static bool CountValue(std::string_view trimmed, double& count)
   {
-    return !trimmed.empty() &&
-      std::all_of(trimmed.begin(), trimmed.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return ParseNumber(trimmed, count) && count >= 0 && count == std::floor(count);
+  }
+
+  // A field of digits only (after an optional '+'): a count, however large.
+  static bool AllDigits(std::string_view field)
+  {
+    const size_t first = !field.empty() && field[0] == '+' ? 1 : 0;
+    return first < field.size() &&
+      std::all_of(field.begin() + first, field.end(), [](char c) { return c >= '0' && c <= '9'; });
+  }
+
+  // At most 40 characters of a field for a message.
+  static std::string Shorten(std::string_view field)
+  {
+    return field.size() <= 40 ? std::string(field)
+                              : std::string(field.substr(0, 40)) + "... (" +
+        std::to_string(field.size()) + " characters)";
   }
 
   // The first line after any count: the delimiter, and the columns from the header or by
@@ -475,6 +496,16 @@ struct TextParse
   bool Point(long number)
   {
     const std::vector<std::string_view>& fields = this->Fields;
+    double count = 0.0;
+    if (this->Format == vtkPointCloudTextReader::PTS && fields.size() == 1 &&
+      CountValue(fields[0], count))
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, number,
+        "'" + Shorten(fields[0]) + "' reads as a scan's count line, but the scan counted on line " +
+          std::to_string(this->ScanLine) + " (" + this->ScanText + " points) has " +
+          std::to_string(this->NumberOfPoints() - (this->ScanEnd - this->ScanPoints)) +
+          " before it");
+    }
     if (fields.size() != this->Targets.size())
     {
       return this->Fail(vtkErrorCode::FileFormatError, number,
@@ -533,12 +564,14 @@ struct TextParse
     }
     if (this->DeclaredCount >= 0 && this->DeclaredCount != n)
     {
-      return this->Fail(vtkErrorCode::FileFormatError, this->CountLine,
-        this->Scans > 1 ? "the count lines of its " + std::to_string(this->Scans) + " scans say " +
-            std::to_string(this->DeclaredCount) + " points in all but the file has " +
-            std::to_string(n)
-                        : "the count line says " + std::to_string(this->DeclaredCount) +
-            " points but the file has " + std::to_string(n));
+      // Every scan but the last was checked when the next one's count line came: the last one
+      // is short.
+      return this->Fail(vtkErrorCode::FileFormatError, this->ScanLine,
+        this->Scans > 1 ? "the count line of the last of " + std::to_string(this->Scans) +
+            " scans says " + this->ScanText + " points but the scan has " +
+            std::to_string(n - (this->ScanEnd - this->ScanPoints))
+                        : "the count line says " + this->ScanText + " points but the file has " +
+            std::to_string(n));
     }
     if (n == 0 && this->Format != vtkPointCloudTextReader::PTS)
     {

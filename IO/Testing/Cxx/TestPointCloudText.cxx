@@ -153,7 +153,9 @@ int TestPointCloudText(int argc, char* argv[])
   ExpectError(folder, "comments.txt", "# nothing\n\n", "holds no point");
   ExpectError(folder, "count.pts", "3\n0 0 0\n1 1 1\n", ":1: the count line says 3 points but the file has 2");
   ExpectError(folder, "scans.pts", "1\n0 0 0\n2\n1 1 1\n",
-    ":1: the count lines of its 2 scans say 3 points in all but the file has 2");
+    ":3: the count line of the last of 2 scans says 2 points but the scan has 1");
+  ExpectError(folder, "scan-count.pts", "2\n0 0 0\n1 1 1\n2 2 2\n1\n3 3 3\n",
+    ":5: '1' reads as a scan's count line, but the scan counted on line 1 (2 points) has 3 before");
   ExpectError(folder, "nocount.pts", "0 0 0\n", "starts with its number of points");
   ExpectError(folder, "colour.pts", "1\n0 0 0 1 300 0 0\n", "not a colour value");
   {

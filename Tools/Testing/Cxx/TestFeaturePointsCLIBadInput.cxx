@@ -376,6 +376,20 @@ void FuzzedFiles()
     narrow->Write();
     ExpectSuccess("a raw appended VTP with 4-byte sizes", { Path("raw32.vtp"), Path("raw.csv"),
                                                             "--quiet" });
+    // Attributes as VTK's reader reads them: an offset with a '+', and text like an attribute
+    // inside another attribute's value.
+    std::string odd = Slurp(Path("raw32.vtp"));
+    const size_t named = odd.find("Name=\"w\"");
+    const size_t zero = odd.find("offset=\"0\"");
+    Check(named != std::string::npos && zero != std::string::npos, "raw32.vtp: no w at offset 0");
+    if (named != std::string::npos && zero != std::string::npos)
+    {
+      odd.replace(zero, 10, "offset=\"+0\"");
+      odd.replace(named, 8, "Name=\"w offset='99999999'\"");
+      Spit(Path("raw32-odd.vtp"), odd);
+      ExpectSuccess("a raw appended VTP with odd attributes", { Path("raw32-odd.vtp"),
+                                                                Path("raw.csv"), "--quiet" });
+    }
     std::string wide = Slurp(Path("raw32.vtp"));
     const size_t header = wide.find("header_type=\"UInt32\"");
     Check(header != std::string::npos, "raw32.vtp: no header_type=\"UInt32\"");
@@ -533,6 +547,21 @@ void LegacyFiles()
   Spit(Path("nan.vtk"), header + "POINTS 4 float\n0 0 0 1 nan 0 0 1 0\n0 0 1\n");
   ExpectFailure("legacy VTK with a nan token", { Path("nan.vtk"), Path("o.vtp") }, 1,
     "nan.vtk: cannot read");
+  // What VTK's reader reads is not refused: a '+' and leading zeros in the count; field data
+  // before the points whose array is named POINTS (its line is no data set's POINTS line).
+  Spit(Path("plus.vtk"), header + "POINTS +0003 float\n0 0 0 1 0 0 0 1 0\n");
+  ExpectSuccess("legacy VTK counting +0003 points", { Path("plus.vtk"), Path("plus.csv"),
+                                                      "--quiet" });
+  std::string zeros;
+  for (int i = 0; i < 5000; ++i)
+  {
+    zeros += "0 ";
+  }
+  Spit(Path("field.vtk"), header + "FIELD FieldData 1\nPOINTS 5000 1 float\n" + zeros +
+      "\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n");
+  ExpectSuccess("legacy VTK with a field array named POINTS", { Path("field.vtk"),
+                                                               Path("plus.csv"), "--quiet" });
+  ::unlink(Path("plus.csv").c_str());
   Spit(Path("negative.vtk"), header + "POINTS -1 float\n0 0 0\n");
   ExpectFailure("legacy VTK declaring -1 points", { Path("negative.vtk"), Path("o.vtp") }, 1,
     "negative.vtk:5: the POINTS line declares '-1' points, not a whole number of 0 or more");
