@@ -599,6 +599,9 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
       dataEnd = size - tail + closing;
     }
   }
+  // Blocks followed by another, and those that leave exactly 4 bytes before it: 8-byte sizes
+  // read as 4-byte ones (header_type UInt32, or none, over a file written with UInt64).
+  int followed = 0, gapsOfFour = 0;
   for (size_t tag = head.find("<DataArray"); tag < appended; tag = head.find("<DataArray", tag + 1))
   {
     const size_t tagEnd = head.find('>', tag);
@@ -643,6 +646,11 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
     // into it, and VTK's reader reads the data shifted.
     const auto next = std::upper_bound(starts.begin(), starts.end(), offset);
     const bool last = next == starts.end();
+    if (!last)
+    {
+      ++followed;
+      gapsOfFour += *next >= offset && *next - offset >= 8 && count == *next - offset - 8;
+    }
     const uint64_t limit = last ? (dataEnd >= start ? dataEnd - start : 0) : *next;
     if ((!last || dataEnd < size) && limit >= offset &&
       (limit - offset < static_cast<uint64_t>(headerBytes) || count > limit - offset - headerBytes))
@@ -705,6 +713,14 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
                           : std::string("not a whole number of points"));
       return false;
     }
+  }
+  if (headerBytes == 4 && !bigEndian && followed > 0 && gapsOfFour == followed)
+  {
+    error = fileName + ": every raw appended block leaves 4 bytes unread before the next: its " +
+      "size fields are 8 bytes wide, but header_type says UInt32" +
+      (TagAttribute(file, "header_type").empty() ? " (its default)" : "") +
+      ": a corrupt header_type";
+    return false;
   }
   return true;
 }

@@ -354,6 +354,23 @@ void FuzzedFiles()
         Path("o.csv") }, 1, "a piece declares NumberOfPoints=\"1400\", but its Points array "
                             "holds 36000 bytes, 1500 points");
     }
+    // 8-byte size fields under header_type="UInt32" (VTK's reader ran out of memory).
+    raw->SetHeaderTypeToUInt64();
+    raw->SetFileName(Path("raw64.vtp").c_str());
+    raw->Write();
+    ExpectSuccess("a raw appended VTP with 8-byte sizes", { Path("raw64.vtp"), Path("raw.csv"),
+                                                            "--quiet" });
+    std::string narrowed = Slurp(Path("raw64.vtp"));
+    const size_t wide64 = narrowed.find("header_type=\"UInt64\"");
+    Check(wide64 != std::string::npos, "raw64.vtp: no header_type=\"UInt64\"");
+    if (wide64 != std::string::npos)
+    {
+      narrowed.replace(wide64, 20, "header_type=\"UInt32\"");
+      Spit(Path("raw64-as-32.vtp"), narrowed);
+      ExpectFailure("8-byte sizes read as 4-byte ones", { Path("raw64-as-32.vtp"),
+        Path("o.csv") }, 1, "raw64-as-32.vtp: every raw appended block leaves 4 bytes unread "
+                            "before the next: its size fields are 8 bytes wide");
+    }
     ::unlink(Path("raw.csv").c_str());
     // 4-byte size fields under header_type="UInt64": each size takes in the 4 bytes after it.
     // Where those are zeros (an array whose first value is 0), the size reads right and VTK's
