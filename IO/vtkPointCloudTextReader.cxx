@@ -146,7 +146,7 @@ void Split(std::string_view line, char delimiter, std::vector<std::string_view>&
 
 // The field separator, from the first line that is not a comment: the format's own (blanks for
 // XYZ/TXT/PTS, commas for CSV), unless the line has none of it and has another: commas (or
-// semicolons) in a .xyz/.txt file, semicolons or tabs in a .csv file.
+// semicolons) in a .xyz/.txt/.pts file, semicolons or tabs in a .csv file.
 char SniffDelimiter(std::string_view line, int format)
 {
   const bool comma = line.find(',') != std::string_view::npos;
@@ -158,11 +158,7 @@ char SniffDelimiter(std::string_view line, int format)
   {
     return comma ? ',' : semicolon ? ';' : tab ? '\t' : blank ? ' ' : ',';
   }
-  if (format == vtkPointCloudTextReader::XYZ)
-  {
-    return comma ? ',' : semicolon ? ';' : ' ';
-  }
-  return ' ';
+  return comma ? ',' : semicolon ? ';' : ' ';
 }
 
 // Header names to column targets: x/y/z, nx/ny/nz as Normals, NAME:k as components of NAME.

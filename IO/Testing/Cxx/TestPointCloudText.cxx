@@ -127,6 +127,13 @@ int TestPointCloudText(int argc, char* argv[])
         r.Value("Intensity", 2) == 7,
       "scans.pts: the third point");
   }
+  {
+    // Commas between the fields, as some exporters write PTS.
+    Read r(Write(folder, "commas.pts", "2\n0,0,0,-120,10,20,30\n1,1,1,5,255,0,7\n"));
+    Check(r.Error.empty() && r.Output && r.Output->GetNumberOfPoints() == 2 &&
+        r.Value("Intensity", 1) == 5,
+      "commas.pts: " + r.Error);
+  }
 
   // Malformed files: the line and the problem in the message, and no points.
   ExpectError(folder, "word.xyz", "1 2 3\n4 five 6\n", ":2: field 2 ('five') is not a number");
