@@ -69,6 +69,14 @@ constexpr double CrossingSigmas = 3.0;
 // surface these reach about 2.5 mean spacings: walls thicker than about 5 spacings keep their
 // sides apart (4 links split noisy single sheets; 6 join the walls of PCEDNet's abc/7010).
 constexpr int SheetLinks = 5;
+// Where those 5 lie on one line with the point (sampling in scan lines: a terrestrial or mobile
+// lidar's rows, a line scanner's profiles, rows farther apart than 5 points along them), two links
+// more join it to the nearest points of its KNear nearest off that line, on either side: else
+// every row is a sheet of its own, a line that no plane or crease model fits. One line: the
+// second principal spread of the 6 points under CollinearSpread of the first (a random sampling
+// of a surface leaves about a third).
+constexpr int LinkSlots = SheetLinks + 2;
+constexpr double CollinearSpread = 0.05;
 // A fit votes only where its hinge explains more than this many noise variances beyond one plane.
 // The gate used to be the cloud's median gain, taken as what a fit gains by chance; with 150
 // neighbours (the default) the angle and the line decide: gates of 1, 4, 10 and 25 give the same
@@ -673,8 +681,9 @@ double FitCurvedHinge(const std::vector<Eigen::Vector3d>& p, const CreaseLine& l
 }
 
 // The neighbours of a point on its own sheet: the neighbourhood's points joined to it through
-// links, a link joining each point to its SheetLinks nearest (either way round). A wall thinner
-// than the neighbourhood but thicker than the links then keeps its two sides apart.
+// links, a link joining each point to its SheetLinks nearest (and, on a sampling in lines, to the
+// next rows: LinkSlots), either way round. A wall thinner than the neighbourhood but thicker than
+// the links then keeps its two sides apart.
 struct SheetReach
 {
   std::vector<int16_t> LocalOf; // by point id: its local index in the current neighbourhood, or -1
@@ -683,11 +692,12 @@ struct SheetReach
   std::vector<int16_t> Stack;
 
   // Marks the reached neighbours in the bit mask `reached` (local indices); returns their count.
-  // `links` holds, by point id, each point's SheetLinks nearest (-1 where fewer).
+  // `links` holds, by point id, each point's LinkSlots links (its SheetLinks nearest and any
+  // across rows; -1 where none).
   int Reach(vtkIdType id, const int32_t* row, int count, const std::vector<int32_t>& links,
     uint64_t* reached)
   {
-    const size_t n = links.size() / SheetLinks;
+    const size_t n = links.size() / LinkSlots;
     if (this->LocalOf.size() != n)
     {
       this->LocalOf.assign(n, -1);
@@ -698,13 +708,13 @@ struct SheetReach
     {
       this->LocalOf[idOf(j)] = static_cast<int16_t>(j);
     }
-    this->Out.resize(points * SheetLinks);
+    this->Out.resize(points * LinkSlots);
     for (int j = 0; j <= count; ++j)
     {
-      const int32_t* linked = links.data() + idOf(j) * SheetLinks;
-      for (int e = 0; e < SheetLinks; ++e)
+      const int32_t* linked = links.data() + idOf(j) * LinkSlots;
+      for (int e = 0; e < LinkSlots; ++e)
       {
-        this->Out[j * SheetLinks + e] = linked[e] >= 0 ? this->LocalOf[linked[e]] : int16_t(-1);
+        this->Out[j * LinkSlots + e] = linked[e] >= 0 ? this->LocalOf[linked[e]] : int16_t(-1);
       }
     }
     for (int j = 0; j <= count; ++j)
@@ -725,9 +735,9 @@ struct SheetReach
       {
         const int j = this->Stack.back();
         this->Stack.pop_back();
-        for (int e = 0; e < SheetLinks; ++e)
+        for (int e = 0; e < LinkSlots; ++e)
         {
-          const int other = this->Out[j * SheetLinks + e];
+          const int other = this->Out[j * LinkSlots + e];
           if (other >= 0 && !this->In[other])
           {
             this->In[other] = 1;
@@ -747,9 +757,9 @@ struct SheetReach
         {
           continue;
         }
-        for (int e = 0; e < SheetLinks; ++e)
+        for (int e = 0; e < LinkSlots; ++e)
         {
-          const int other = this->Out[j * SheetLinks + e];
+          const int other = this->Out[j * LinkSlots + e];
           if (other >= 0 && this->In[other])
           {
             spread(j);
@@ -1020,6 +1030,9 @@ struct CreaseRun
   void ComputeNormals(int kn, const double center[3], float* normal);
   // Storage of the fits, the sheets and the per-point flags of Stream()'s passes.
   void PrepareFits();
+  // Links of point id (its row of KNear nearest) across to the neighbouring rows of a sampling in
+  // lines (see LinkSlots), into links[SheetLinks...].
+  void LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int32_t* links) const;
   // Runs the passes over the rows in turn, each over a block of rows (positions begin to end - 1
   // of Order) once every row the block's rows read has been through the pass before: passes[0]
   // as soon as the block's K nearest are found, then passes[1] and passes[2]; the block is
@@ -1223,6 +1236,53 @@ bool OnePlane(const std::vector<Eigen::Vector3d>& p, double variance, CreaseFit&
   return true;
 }
 
+void CreaseRun::LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int32_t* links) const
+{
+  const int first = std::min(count, SheetLinks);
+  if (first < 2 || count <= first)
+  {
+    return;
+  }
+  double x[3], y[3];
+  this->Reader.Get(id, x);
+  std::vector<Eigen::Vector3d> p(1, Eigen::Vector3d::Zero());
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int j = 0; j < first; ++j)
+  {
+    this->Reader.Get(row[j], y);
+    p.emplace_back(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+    mean += p.back();
+  }
+  mean /= static_cast<double>(p.size());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& q : p)
+  {
+    scatter += (q - mean) * (q - mean).transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
+  const Eigen::Vector3d spread = solver.eigenvalues(); // ascending
+  if (!(spread[2] > 0.0) || spread[1] >= CollinearSpread * spread[2])
+  {
+    return;
+  }
+  const Eigen::Vector3d u = solver.eigenvectors().col(2);
+  Eigen::Vector3d side = Eigen::Vector3d::Zero();
+  int added = 0;
+  for (int j = first; j < count && added < LinkSlots - SheetLinks; ++j)
+  {
+    this->Reader.Get(row[j], y);
+    const Eigen::Vector3d v(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+    const Eigen::Vector3d off = v - v.dot(u) * u;
+    // Off the line: more across it than along it; the second on the other side of the first.
+    if (off.squaredNorm() <= v.dot(u) * v.dot(u) || (added == 1 && off.dot(side) >= 0.0))
+    {
+      continue;
+    }
+    side = off;
+    links[SheetLinks + added++] = row[j];
+  }
+}
+
 void CreaseRun::PrepareFits()
 {
   this->Fits.Reset(this->Rows);
@@ -1233,13 +1293,15 @@ void CreaseRun::PrepareFits()
   // By point id: its SheetLinks nearest (the start of its row), -1 where none. The one-sheet
   // links read these for every neighbour of every point: a table of their own keeps them
   // together in memory instead of one cache line per row of the wide table.
-  this->Links.assign(static_cast<size_t>(this->N) * SheetLinks, -1);
+  this->Links.assign(static_cast<size_t>(this->N) * LinkSlots, -1);
   const int width = std::min(SheetLinks, this->K);
-  int32_t first[SheetLinks];
+  std::vector<int32_t> buffer(static_cast<size_t>(this->KNear));
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
-    const int32_t* row = this->Row(r, first, width);
-    std::copy(row, row + width, this->Links.data() + this->Ids[r] * SheetLinks);
+    const int32_t* row = this->Row(r, buffer.data(), this->KNear);
+    int32_t* links = this->Links.data() + this->Ids[r] * LinkSlots;
+    std::copy(row, row + width, links);
+    this->LinkAcrossRows(this->Ids[r], row, featurepoints::RowLength(row, this->KNear), links);
   }
   this->Flat.assign(static_cast<size_t>(this->N), 0);
   this->Voter.assign(static_cast<size_t>(this->N), 0);

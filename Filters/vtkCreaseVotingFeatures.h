@@ -13,7 +13,9 @@
  *
  * 0. One sheet. Only the neighbours joined to P_i through links count, each point linked to its
  *    5 nearest (either way round): both sides of a wall about 5 spacings thick or more are then
- *    told apart (thin walls, shells, sheet metal). N below is the number of such points; with
+ *    told apart (thin walls, shells, sheet metal). Where the 5 nearest lie on one line with the
+ *    point (a cloud sampled in scan lines), it is also linked to its nearest off that line on
+ *    either side, so that the rows form one sheet. N below is the number of such points; with
  *    fewer than 8, the whole neighbourhood is used. Where one plane explains these points
  *    within the noise (the bound of step 2b), and one plane likewise explains those of each of
  *    its 40 nearest on the sheet, no feature is in view: the point gets that plane and no line

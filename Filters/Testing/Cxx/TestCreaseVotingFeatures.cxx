@@ -4,7 +4,13 @@
 // The held-out quality floors are in Benchmarks (FeaturePoints::QualityFloors).
 #include "FeaturePointsTestRun.h"
 #include "vtkCreaseVotingFeatures.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cstring>
@@ -138,7 +144,53 @@ int TestCreaseVotingFeatures(int, char*[])
     FP_CHECK(thinFound > 0 && thinFound < 0.85 * CountSet(mask), "border: thin mask of %ld points",
       thinFound);
     FP_CHECK(thinFar <= thinFound / 8, "border: %ld thin points far from the outline", thinFar);
+  }  // A plane sampled in scan lines (rows 6 times farther apart than the points along them, as a
+  // lidar's): the 5 nearest of every point lie on its own row, and the rows must still be joined
+  // into one sheet. Its outline is found as a border, nothing inside it, no crease.
+  {
+    vtkNew<vtkPoints> points;
+    vtkMinimalStandardRandomSequence* noise = vtkMinimalStandardRandomSequence::New();
+    noise->SetSeed(11);
+    for (int row = 0; row < 67; ++row)
+    {
+      for (int i = 0; i < 600; ++i)
+      {
+        noise->Next();
+        points->InsertNextPoint(0.1 * i, 0.6 * row, 0.005 * (noise->GetValue() - 0.5));
+      }
+    }
+    noise->Delete();
+    vtkNew<vtkPolyData> lines;
+    lines->SetPoints(points);
+    auto filter = Run(lines, true);
+    vtkPolyData* out = filter->GetOutput();
+    vtkUnsignedCharArray* mask = Mask(out);
+    vtkDataArray* types = out->GetPointData()->GetArray("FeatureType");
+    long rim = 0, rimFound = 0, inner = 0, innerFound = 0, creases = 0;
+    for (vtkIdType i = 0; types && i < out->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      out->GetPoint(i, x);
+      const double edge =
+        std::min(std::min(x[0], 59.9 - x[0]) / 0.1, std::min(x[1], 39.6 - x[1]) / 0.6);
+      const bool found = mask->GetValue(i) != 0;
+      rim += edge < 0.5;
+      rimFound += edge < 0.5 && found;
+      inner += edge > 3.0;
+      innerFound += edge > 3.0 && found;
+      const int type = static_cast<int>(types->GetTuple1(i));
+      creases += found &&
+        (type == vtkCreaseVotingFeatures::CONVEX || type == vtkCreaseVotingFeatures::CONCAVE);
+    }
+    std::printf("%-18s %ld of %ld outline points, %ld of %ld beyond 3 rows or points of it, %ld "
+                "creases\n",
+      "scan lines", rimFound, rim, innerFound, inner, creases);
+    FP_CHECK(rimFound >= 0.9 * rim, "scan lines: %ld of %ld outline points found", rimFound, rim);
+    FP_CHECK(innerFound <= 0.002 * inner, "scan lines: %ld of %ld inner points found", innerFound,
+      inner);
+    FP_CHECK(creases == 0, "scan lines: %ld crease points", creases);
   }
+
 
   // Same output for every backend and thread count.
   {
