@@ -1245,19 +1245,20 @@ void CreaseRun::LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int3
   }
   double x[3], y[3];
   this->Reader.Get(id, x);
-  std::vector<Eigen::Vector3d> p(1, Eigen::Vector3d::Zero());
+  Eigen::Vector3d p[SheetLinks + 1];
+  p[0].setZero();
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (int j = 0; j < first; ++j)
   {
     this->Reader.Get(row[j], y);
-    p.emplace_back(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
-    mean += p.back();
+    p[j + 1] = Eigen::Vector3d(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+    mean += p[j + 1];
   }
-  mean /= static_cast<double>(p.size());
+  mean /= static_cast<double>(first + 1);
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (const Eigen::Vector3d& q : p)
+  for (int j = 0; j <= first; ++j)
   {
-    scatter += (q - mean) * (q - mean).transpose();
+    scatter += (p[j] - mean) * (p[j] - mean).transpose();
   }
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
   const Eigen::Vector3d spread = solver.eigenvalues(); // ascending
@@ -1295,14 +1296,16 @@ void CreaseRun::PrepareFits()
   // together in memory instead of one cache line per row of the wide table.
   this->Links.assign(static_cast<size_t>(this->N) * LinkSlots, -1);
   const int width = std::min(SheetLinks, this->K);
-  std::vector<int32_t> buffer(static_cast<size_t>(this->KNear));
-  for (vtkIdType r = 0; r < this->Rows; ++r)
-  {
-    const int32_t* row = this->Row(r, buffer.data(), this->KNear);
-    int32_t* links = this->Links.data() + this->Ids[r] * LinkSlots;
-    std::copy(row, row + width, links);
-    this->LinkAcrossRows(this->Ids[r], row, featurepoints::RowLength(row, this->KNear), links);
-  }
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<int32_t> buffer(static_cast<size_t>(this->KNear));
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const int32_t* row = this->Row(r, buffer.data(), this->KNear);
+      int32_t* links = this->Links.data() + this->Ids[r] * LinkSlots;
+      std::copy(row, row + width, links);
+      this->LinkAcrossRows(this->Ids[r], row, featurepoints::RowLength(row, this->KNear), links);
+    }
+  });
   this->Flat.assign(static_cast<size_t>(this->N), 0);
   this->Voter.assign(static_cast<size_t>(this->N), 0);
   // A whole run marks no NearBorder (every row is kept): any point may join the border band.
