@@ -77,6 +77,9 @@ constexpr int SheetLinks = 5;
 // of a surface leaves about a third).
 constexpr int LinkSlots = SheetLinks + 2;
 constexpr double CollinearSpread = 0.05;
+// Where the KNear nearest hold no point of the next row on one side (rows more than about 6 points
+// apart), the links across are taken from this many nearest: rows up to about 20 points apart.
+constexpr int AcrossRowsNeighbors = 50;
 // A fit votes only where its hinge explains more than this many noise variances beyond one plane.
 // The gate used to be the cloud's median gain, taken as what a fit gains by chance; with 150
 // neighbours (the default) the angle and the line decide: gates of 1, 4, 10 and 25 give the same
@@ -943,6 +946,10 @@ struct CreaseRun
   // OnePlane), its fit votes (these three while Stream() runs); a border point (before the short
   // borders are dropped) lies within the band among its kb nearest on its sheet.
   std::vector<int32_t> Links;
+  // By point id: on a sampling in scan lines, half the distance across to the next row (its
+  // nearest link across, see LinkAcrossRows); 0 elsewhere. The vote's band reaches at least that
+  // far in units of BandWidth: a crease between two rows passes up to half their gap from both.
+  std::vector<float> Across;
   std::vector<unsigned char> Flat, Voter, NearBorder;
   // Distributed runs: Stream() keeps the K nearest of every row and runs each pass once over all
   // of them, so that the halo's values are exchanged between the passes (see RequestData).
@@ -1029,10 +1036,12 @@ struct CreaseRun
   // the median over the cloud of their quadric's residual per degree of freedom.
   void ComputeNormals(int kn, const double center[3], float* normal);
   // Storage of the fits, the sheets and the per-point flags of Stream()'s passes.
-  void PrepareFits();
+  void PrepareFits(vtkPointCloudNeighborhoods* neighborhoods);
   // Links of point id (its row of KNear nearest) across to the neighbouring rows of a sampling in
   // lines (see LinkSlots), into links[SheetLinks...].
-  void LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int32_t* links) const;
+  // Returns true where the 5 nearest are collinear and fewer than two links across were found
+  // among `row`: a wider row may find them.
+  bool LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int32_t* links);
   // Runs the passes over the rows in turn, each over a block of rows (positions begin to end - 1
   // of Order) once every row the block's rows read has been through the pass before: passes[0]
   // as soon as the block's K nearest are found, then passes[1] and passes[2]; the block is
@@ -1236,12 +1245,12 @@ bool OnePlane(const std::vector<Eigen::Vector3d>& p, double variance, CreaseFit&
   return true;
 }
 
-void CreaseRun::LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int32_t* links) const
+bool CreaseRun::LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int32_t* links)
 {
   const int first = std::min(count, SheetLinks);
   if (first < 2 || count <= first)
   {
-    return;
+    return false;
   }
   double x[3], y[3];
   this->Reader.Get(id, x);
@@ -1264,8 +1273,9 @@ void CreaseRun::LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int3
   const Eigen::Vector3d spread = solver.eigenvalues(); // ascending
   if (!(spread[2] > 0.0) || spread[1] >= CollinearSpread * spread[2])
   {
-    return;
+    return false;
   }
+  std::fill(links + SheetLinks, links + LinkSlots, -1);
   const Eigen::Vector3d u = solver.eigenvectors().col(2);
   Eigen::Vector3d side = Eigen::Vector3d::Zero();
   int added = 0;
@@ -1279,12 +1289,17 @@ void CreaseRun::LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int3
     {
       continue;
     }
+    if (added == 0)
+    {
+      this->Across[id] = static_cast<float>(0.5 * off.norm());
+    }
     side = off;
     links[SheetLinks + added++] = row[j];
   }
+  return added < LinkSlots - SheetLinks;
 }
 
-void CreaseRun::PrepareFits()
+void CreaseRun::PrepareFits(vtkPointCloudNeighborhoods* neighborhoods)
 {
   this->Fits.Reset(this->Rows);
   this->Sheets.assign(static_cast<size_t>(this->Rows) * this->Words, 0);
@@ -1295,7 +1310,9 @@ void CreaseRun::PrepareFits()
   // links read these for every neighbour of every point: a table of their own keeps them
   // together in memory instead of one cache line per row of the wide table.
   this->Links.assign(static_cast<size_t>(this->N) * LinkSlots, -1);
+  this->Across.assign(static_cast<size_t>(this->N), 0.0f);
   const int width = std::min(SheetLinks, this->K);
+  std::vector<unsigned char> wider(static_cast<size_t>(this->Rows), 0);
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     std::vector<int32_t> buffer(static_cast<size_t>(this->KNear));
     for (vtkIdType r = begin; r < end; ++r)
@@ -1303,9 +1320,40 @@ void CreaseRun::PrepareFits()
       const int32_t* row = this->Row(r, buffer.data(), this->KNear);
       int32_t* links = this->Links.data() + this->Ids[r] * LinkSlots;
       std::copy(row, row + width, links);
-      this->LinkAcrossRows(this->Ids[r], row, featurepoints::RowLength(row, this->KNear), links);
+      wider[r] =
+        this->LinkAcrossRows(this->Ids[r], row, featurepoints::RowLength(row, this->KNear), links);
     }
   });
+  // Rows farther apart than the KNear nearest reach (6 points along them and more): the links
+  // across from the AcrossRowsNeighbors nearest, searched for those points alone, a block at a
+  // time.
+  std::vector<vtkIdType> ids;
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    if (wider[r])
+    {
+      ids.push_back(this->Ids[r]);
+    }
+  }
+  const int kw = std::min<vtkIdType>(AcrossRowsNeighbors, std::max<vtkIdType>(this->N - 1, 1));
+  std::vector<int32_t> table;
+  for (size_t start = 0; neighborhoods && kw > this->KNear && start < ids.size(); start += 65536)
+  {
+    const std::vector<vtkIdType> block(
+      ids.begin() + start, ids.begin() + std::min(ids.size(), start + 65536));
+    if (!neighborhoods->FindNearestNeighbors(kw, block, table))
+    {
+      break;
+    }
+    vtkSMPTools::For(0, static_cast<vtkIdType>(block.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        const int32_t* row = table.data() + b * kw;
+        this->LinkAcrossRows(
+          block[b], row, featurepoints::RowLength(row, kw), this->Links.data() + block[b] * LinkSlots);
+      }
+    });
+  }
   this->Flat.assign(static_cast<size_t>(this->N), 0);
   this->Voter.assign(static_cast<size_t>(this->N), 0);
   // A whole run marks no NearBorder (every row is kept): any point may join the border band.
@@ -1799,7 +1847,7 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
         this->Reader.Get(other, y);
         const double v[3] = { x[0] - y[0], x[1] - y[1], x[2] - y[2] };
         const double distance = this->LineDistance(this->RowOf[other], v);
-        if (distance <= band)
+        if (distance <= std::max(band, bandWidth * this->Across[id]))
         {
           ++in;
           distances.push_back(distance);
@@ -2479,7 +2527,7 @@ int vtkCreaseVotingFeatures::RequestData(
 
   // Steps 0-4 and the borders' empty sectors, row by row as the k nearest are found.
   this->BeginStage("crease fits");
-  run.PrepareFits();
+  run.PrepareFits(neighborhoods);
   std::vector<unsigned char> detail(static_cast<size_t>(n), 0);
   std::vector<unsigned char> border(static_cast<size_t>(n), 0);
   std::vector<float> outward(3 * static_cast<size_t>(n), 0.0f);

@@ -68,8 +68,9 @@
  * 3. Crease line of the fit: the intersection of the two planes (when they are not parallel).
  * 4. Vote. A point j of P_i's neighbourhood (P_i included) votes for P_i when its two planes
  *    fit better than one (gain above 1), meet at MinimumAngle or more, and its crease line
- *    passes within BandWidth d of P_i. The score `CreaseVotes` is the fraction of the N points
- *    that vote.
+ *    passes within BandWidth d of P_i (on a cloud sampled in scan lines, within BandWidth times
+ *    half the gap to the next row, where that is larger: a crease between two rows). The score
+ *    `CreaseVotes` is the fraction of the N points that vote.
  * 5. A point is a feature point when a majority of its neighbourhood votes for it: score > 0.5
  *    (ThresholdMode ABSOLUTE, Threshold 0.5 by default).
  * 6. Hysteresis along the features: a point with more than GrowThreshold (0.3) of the votes

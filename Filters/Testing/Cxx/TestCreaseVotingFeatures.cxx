@@ -13,6 +13,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -189,6 +190,48 @@ int TestCreaseVotingFeatures(int, char*[])
     FP_CHECK(innerFound <= 0.002 * inner, "scan lines: %ld of %ld inner points found", innerFound,
       inner);
     FP_CHECK(creases == 0, "scan lines: %ld crease points", creases);
+  }
+  // Scan lines across a 45-degree crease that runs along them, halfway between two rows: both
+  // rows beside it are crease points (the vote's band reaches half the rows' gap), none farther.
+  {
+    vtkNew<vtkPoints> points;
+    for (int row = 0; row < 34; ++row)
+    {
+      for (int i = 0; i < 300; ++i)
+      {
+        const double y = 0.6 * row;
+        points->InsertNextPoint(0.1 * i, y, y > 10.5 ? y - 10.5 : 0.0);
+      }
+    }
+    vtkNew<vtkPolyData> bent;
+    bent->SetPoints(points);
+    auto filter = Run(bent, true);
+    vtkPolyData* out = filter->GetOutput();
+    vtkUnsignedCharArray* mask = Mask(out);
+    vtkDataArray* types = out->GetPointData()->GetArray("FeatureType");
+    long beside = 0, besideFound = 0, far = 0, farFound = 0;
+    for (vtkIdType i = 0; types && i < out->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      out->GetPoint(i, x);
+      if (x[0] < 1.0 || x[0] > 28.9)
+      {
+        continue; // the outline's border band
+      }
+      const double d = std::abs(x[1] - 10.5);
+      const int type = static_cast<int>(types->GetTuple1(i));
+      const bool crease = mask->GetValue(i) != 0 &&
+        (type == vtkCreaseVotingFeatures::CONVEX || type == vtkCreaseVotingFeatures::CONCAVE);
+      beside += d < 0.35;
+      besideFound += d < 0.35 && crease;
+      far += d > 1.5 && x[1] > 1.5 && x[1] < 18.0;
+      farFound += d > 1.5 && x[1] > 1.5 && x[1] < 18.0 && mask->GetValue(i) != 0;
+    }
+    std::printf("%-18s %ld of %ld points beside the crease found as creases, %ld of %ld far\n",
+      "crease along rows", besideFound, beside, farFound, far);
+    FP_CHECK(besideFound >= 0.9 * beside, "crease along rows: %ld of %ld found", besideFound,
+      beside);
+    FP_CHECK(farFound <= 0.002 * far, "crease along rows: %ld of %ld far points", farFound, far);
   }
 
 
