@@ -57,7 +57,7 @@ reader.SetFileName(sys.argv[2])
 features = vtkCreaseVotingFeatures()
 features.SetInputConnection(reader.GetOutputPort())
 features.Update()
-assert features.GetNumberOfFeaturePoints() == 556, features.GetNumberOfFeaturePoints()
+assert features.GetNumberOfFeaturePoints() == 559, features.GetNumberOfFeaturePoints()
 print("installed featurepoints:", featurepoints.__file__)
 ]=])
   run_step("import the installed Python package from ${_site}" "${CMAKE_COMMAND}" -E env

@@ -33,12 +33,12 @@ def test_example_reads_detects_writes_and_renders(tmp_path):
     done = subprocess.run([sys.executable, EXAMPLE, CLOUD, prefix], capture_output=True,
                           text=True, timeout=300)
     assert done.returncode == 0, done.stderr
-    assert "556 feature points of 6002;" in done.stdout
-    assert "convex 85, concave 0, corner 58, border 413" in done.stdout
+    assert "559 feature points of 6002;" in done.stdout
+    assert "convex 88, concave 0, corner 58, border 413" in done.stdout
     reader = vtkPointCloudReader()
     reader.SetFileName(prefix + ".vtp")
     reader.Update()
-    assert vtk_to_numpy(reader.GetOutput().GetPointData().GetArray("FeatureMask")).sum() == 556
+    assert vtk_to_numpy(reader.GetOutput().GetPointData().GetArray("FeatureMask")).sum() == 559
     png = vtkPNGReader()
     png.SetFileName(prefix + ".png")
     png.Update()
