@@ -565,7 +565,10 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
   const uint64_t start = underscore + 1;
   const int headerBytes = TagAttribute(file, "header_type") == "UInt64" ? 8 : 4;
   const bool bigEndian = TagAttribute(file, "byte_order") == "BigEndian";
-  // Every array's offset, in order: no block may run into the next one.
+  // The appended arrays (their tags, where they start in head) and their offsets, in order: no
+  // block may run into the next one. Arrays not appended, or without an offset, are VTK's
+  // reader's to judge.
+  std::vector<size_t> tags;
   std::vector<uint64_t> starts;
   for (size_t tag = head.find("<DataArray"); tag < appended; tag = head.find("<DataArray", tag + 1))
   {
@@ -577,7 +580,12 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
     const std::string array = head.substr(tag, tagEnd - tag);
     const std::string text = TagAttribute(array, "offset");
     uint64_t offset = 0;
-    if (TagAttribute(array, "format") == "appended" && ParseOffset(text, offset))
+    if (TagAttribute(array, "format") != "appended" || text.empty())
+    {
+      continue;
+    }
+    tags.push_back(tag);
+    if (ParseOffset(text, offset))
     {
       starts.push_back(offset);
     }
@@ -602,19 +610,10 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
   // Blocks followed by another, and those that leave exactly 4 bytes before it: 8-byte sizes
   // read as 4-byte ones (header_type UInt32, or none, over a file written with UInt64).
   int followed = 0, gapsOfFour = 0;
-  for (size_t tag = head.find("<DataArray"); tag < appended; tag = head.find("<DataArray", tag + 1))
+  for (const size_t tag : tags)
   {
-    const size_t tagEnd = head.find('>', tag);
-    if (tagEnd == std::string::npos || tagEnd > appended)
-    {
-      break;
-    }
-    const std::string array = head.substr(tag, tagEnd - tag);
+    const std::string array = head.substr(tag, head.find('>', tag) - tag);
     const std::string text = TagAttribute(array, "offset");
-    if (TagAttribute(array, "format") != "appended" || text.empty())
-    {
-      continue; // not appended, or no offset: VTK's reader says what is wrong
-    }
     const std::string name = TagAttribute(array, "Name");
     const std::string what = name.empty() ? "an unnamed array" : "array '" + name + "'";
     uint64_t offset = 0;
