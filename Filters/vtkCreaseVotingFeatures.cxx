@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <deque>
 #include <functional>
 #include <limits>
@@ -951,9 +952,15 @@ struct CreaseRun
   // far in units of BandWidth: a crease between two rows passes up to half their gap from both.
   std::vector<float> Across;
   std::vector<unsigned char> Flat, Voter, NearBorder;
-  // Distributed runs: Stream() keeps the K nearest of every row and runs each pass once over all
-  // of them, so that the halo's values are exchanged between the passes (see RequestData).
-  bool Whole = false;
+  // Distributed runs (see RequestData): the passes of Stream() leave out the rows that read a
+  // halo point's value before the halo has its owners' values (exchanged once Stream() is
+  // through), and RunDeferred() runs them then. By row: DeferFits, the halo's rows and those
+  // with a halo point among their ViewNeighbors nearest (what FitInView() reads), for passes 1
+  // and 2; DeferVotes, those and the rows with a DeferFits row among their K nearest (the
+  // voters CastVotes() reads), for pass 2. Deferring: RunDeferred() is running.
+  bool Distributed = false;
+  bool Deferring = false;
+  std::vector<unsigned char> DeferFits, DeferVotes;
   vtkSMPThreadLocal<Scratch> Scratches;
   // One bit per neighbour (and the point) of each row: on the point's sheet.
   size_t Words = 0;
@@ -993,7 +1000,17 @@ struct CreaseRun
   // Distributed runs: the halo's values of a per-point array (`bytes` bytes a point) replaced by
   // their owners', so that a stage reads its neighbours' exact values, not their neighbours'.
   std::function<void(void*, int)> FromOwners;
+  // The same for a record kept by row (see vtkFeaturePointDetector::ShareHaloRecords()).
+  std::function<void(int, const std::function<void(vtkIdType, unsigned char*)>&,
+    const std::function<void(vtkIdType, const unsigned char*)>&)>
+    RecordsFromOwners;
   bool IsOwn(vtkIdType id) const { return !this->Own || this->Own[id] != 0; }
+  // Whether the current pass leaves row r out: pass 1 or 2 of Stream() on a deferred row.
+  bool Defers(vtkIdType r, int pass) const
+  {
+    const std::vector<unsigned char>& deferred = pass == 1 ? this->DeferFits : this->DeferVotes;
+    return !this->Deferring && !deferred.empty() && deferred[r];
+  }
 
   CreaseRun(const featurepoints::PointReader& reader, const std::vector<vtkIdType>& ids,
     const NeighborTable& table, int k, int knear, int kfit, double d, vtkIdType n)
@@ -1052,6 +1069,15 @@ struct CreaseRun
     const std::function<void(vtkIdType, vtkIdType)> passes[3]);
   // The K nearest of the rows r with wanted(r), kept from now on (see Row()).
   bool LoadRows(vtkPointCloudNeighborhoods* neighborhoods, const std::function<bool(vtkIdType)>& wanted);
+  // Distributed runs: DeferFits of the rows begin to end - 1 (in pass 0), DeferVotes (in pass 2,
+  // after pass 0 on every row they read).
+  void MarkDeferredFits(vtkIdType begin, vtkIdType end);
+  void MarkDeferredVotes(vtkIdType begin, vtkIdType end);
+  // Distributed runs, once Stream() is through and the halo has its owners' one-plane flags:
+  // the K nearest of the deferred rows (kept, see Row()), then passes[0] over the DeferFits
+  // rows and passes[1] over the DeferVotes rows (positions 0 to the count - 1 of Order).
+  bool RunDeferred(vtkPointCloudNeighborhoods* neighborhoods,
+    const std::function<void(vtkIdType, vtkIdType)> passes[2]);
   // Steps 1b-3 at the widest scale, rows begin to end - 1: the sheet of every point, its
   // two-plane fit.
   void FitCreases(const float* normal, vtkIdType begin, vtkIdType end);
@@ -1356,8 +1382,12 @@ void CreaseRun::PrepareFits(vtkPointCloudNeighborhoods* neighborhoods)
   }
   this->Flat.assign(static_cast<size_t>(this->N), 0);
   this->Voter.assign(static_cast<size_t>(this->N), 0);
-  // A whole run marks no NearBorder (every row is kept): any point may join the border band.
-  this->NearBorder.assign(static_cast<size_t>(this->N), this->Whole ? 1 : 0);
+  this->NearBorder.assign(static_cast<size_t>(this->N), 0);
+  if (this->Distributed)
+  {
+    this->DeferFits.assign(static_cast<size_t>(this->Rows), 0);
+    this->DeferVotes.assign(static_cast<size_t>(this->Rows), 0);
+  }
 }
 
 bool CreaseRun::Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* algorithm,
@@ -1411,41 +1441,6 @@ bool CreaseRun::Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* 
     {
       passes[pass](0, this->Rows);
     }
-    return true;
-  }
-  if (this->Whole)
-  {
-    // The K nearest of every row, kept (LoadRows() finds them there); each pass once over all
-    // the rows, so that the halo's values can be exchanged between two passes.
-    this->SubsetSlot.resize(static_cast<size_t>(this->Rows));
-    this->Subset.Reset(this->Rows, this->K);
-    std::vector<vtkIdType> rowIds;
-    std::vector<int32_t> found;
-    for (vtkIdType first = 0; first < this->Rows; first += BlockRows)
-    {
-      const vtkIdType count = std::min(BlockRows, this->Rows - first);
-      rowIds.assign(this->Ids.begin() + first, this->Ids.begin() + first + count);
-      const double begin =
-        progressStart + (progressEnd - progressStart) * static_cast<double>(first) / this->Rows;
-      const double end = progressStart +
-        (progressEnd - progressStart) * static_cast<double>(first + count) / this->Rows;
-      if (!neighborhoods->FindNearestNeighbors(
-            this->K, rowIds, found, nullptr, algorithm, begin, end))
-      {
-        return false;
-      }
-      this->Subset.Store(first, count, found.data());
-      for (vtkIdType r = first; r < first + count; ++r)
-      {
-        this->SubsetSlot[r] = static_cast<int32_t>(r);
-      }
-    }
-    for (int pass = 0; pass < 3; ++pass)
-    {
-      passes[pass](0, this->Rows);
-    }
-    std::vector<int32_t>().swap(this->Order);
-    std::vector<int32_t>().swap(this->Rank);
     return true;
   }
   const vtkIdType blocks = (this->Rows + BlockRows - 1) / BlockRows;
@@ -1529,9 +1524,9 @@ bool CreaseRun::Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* 
 bool CreaseRun::LoadRows(
   vtkPointCloudNeighborhoods* neighborhoods, const std::function<bool(vtkIdType)>& wanted)
 {
-  if (this->K <= this->KNear || this->Whole)
+  if (this->K <= this->KNear)
   {
-    return true; // the narrow table or Stream()'s holds every row whole
+    return true; // the narrow table holds every row whole
   }
   this->SubsetSlot.assign(static_cast<size_t>(this->Rows), -1);
   std::vector<vtkIdType> rows;
@@ -1561,6 +1556,84 @@ bool CreaseRun::LoadRows(
     }
     this->Subset.Store(first, size, found.data());
   }
+  return true;
+}
+
+void CreaseRun::MarkDeferredFits(vtkIdType begin, vtkIdType end)
+{
+  vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
+    std::vector<int32_t> buffer(static_cast<size_t>(this->K));
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      const vtkIdType r = this->Order[i];
+      bool halo = !this->IsOwn(this->Ids[r]);
+      const int32_t* row = this->Row(r, buffer.data(), ViewNeighbors);
+      const int count = featurepoints::RowLength(row, std::min(ViewNeighbors, this->KFit));
+      for (int j = 0; j < count && !halo; ++j)
+      {
+        halo = !this->IsOwn(row[j]);
+      }
+      this->DeferFits[r] = halo ? 1 : 0;
+      this->DeferVotes[r] = this->DeferFits[r];
+    }
+  });
+}
+
+void CreaseRun::MarkDeferredVotes(vtkIdType begin, vtkIdType end)
+{
+  vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
+    std::vector<int32_t> buffer(static_cast<size_t>(this->K));
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      const vtkIdType r = this->Order[i];
+      const int32_t* row = this->Row(r, buffer.data());
+      const int count = featurepoints::RowLength(row, this->K);
+      bool deferred = this->DeferFits[r] != 0;
+      for (int j = 0; j < count && !deferred; ++j)
+      {
+        const vtkIdType q = this->RowOf[row[j]];
+        deferred = q >= 0 && this->DeferFits[q] != 0;
+      }
+      this->DeferVotes[r] = deferred ? 1 : 0;
+    }
+  });
+}
+
+bool CreaseRun::RunDeferred(vtkPointCloudNeighborhoods* neighborhoods,
+  const std::function<void(vtkIdType, vtkIdType)> passes[2])
+{
+  // Order: the DeferFits rows, then the other DeferVotes rows.
+  this->Order.clear();
+  for (int kind = 0; kind < 2; ++kind)
+  {
+    for (vtkIdType r = 0; r < this->Rows; ++r)
+    {
+      if (this->DeferVotes[r] && (this->DeferFits[r] != 0) == (kind == 0))
+      {
+        this->Order.push_back(static_cast<int32_t>(r));
+      }
+    }
+  }
+  vtkIdType fits = 0;
+  while (fits < static_cast<vtkIdType>(this->Order.size()) && this->DeferFits[this->Order[fits]])
+  {
+    ++fits;
+  }
+  if (!this->LoadRows(neighborhoods, [&](vtkIdType r) { return this->DeferVotes[r] != 0; }))
+  {
+    return false;
+  }
+  this->Deferring = true;
+  passes[0](0, fits);
+  passes[1](0, static_cast<vtkIdType>(this->Order.size()));
+  this->Deferring = false;
+  for (const int32_t r : this->Order)
+  {
+    this->NearBorder[this->Ids[r]] = 1; // the border band's test reads the halo's values
+  }
+  std::vector<int32_t>().swap(this->Order);
+  std::vector<unsigned char>().swap(this->DeferFits);
+  std::vector<unsigned char>().swap(this->DeferVotes);
   return true;
 }
 
@@ -1615,7 +1688,7 @@ void CreaseRun::FitInView(const float* normal, vtkIdType begin, vtkIdType end)
     for (vtkIdType i = first; i < last; ++i)
     {
       const vtkIdType r = this->Order[i];
-      if (!this->Flat[this->Ids[r]])
+      if (!this->Flat[this->Ids[r]] || this->Defers(r, 1))
       {
         continue;
       }
@@ -1667,7 +1740,7 @@ void CreaseRun::ChooseScales(
     for (vtkIdType i = begin; i < end; ++i)
     {
       const vtkIdType r = this->Order[i];
-      if (Explains(this->Fits[r], this->Variance))
+      if (this->Defers(r, 1) || Explains(this->Fits[r], this->Variance))
       {
         continue;
       }
@@ -1735,7 +1808,7 @@ void CreaseRun::ChooseModels(float* gain, float* angle, vtkIdType begin, vtkIdTy
   for (vtkIdType i = begin; i < end; ++i)
   {
     const vtkIdType r = this->Order[i];
-    if (!this->Fits.Has(r))
+    if (!this->Fits.Has(r) || this->Defers(r, 1))
     {
       continue; // OnePlaneFit: explained, no gain, no line
     }
@@ -1760,23 +1833,23 @@ void CreaseRun::ShareModels()
     CreaseLine Hinge;
     bool Explained;
   };
-  std::vector<Model> models(static_cast<size_t>(this->N));
-  for (vtkIdType r = 0; r < this->Rows; ++r)
-  {
-    Model& model = models[this->Ids[r]];
-    model.Gain = this->Gain[r];
-    model.Hinge = this->Fits[r].Hinge;
-    model.Explained = this->Fits[r].Explained;
-  }
-  this->FromOwners(models.data(), static_cast<int>(sizeof(Model)));
-  for (vtkIdType r = 0; r < this->Rows; ++r)
-  {
-    if (this->IsOwn(this->Ids[r]))
+  auto read = [&](vtkIdType id, unsigned char* record) {
+    const vtkIdType r = this->RowOf[id];
+    if (r >= 0)
     {
-      continue;
+      const Model model{ this->Gain[r], this->Fits[r].Hinge, this->Fits[r].Explained };
+      std::memcpy(record, &model, sizeof(Model));
     }
+  };
+  auto write = [&](vtkIdType id, const unsigned char* record) {
+    const vtkIdType r = this->RowOf[id];
+    if (r < 0)
+    {
+      return;
+    }
+    Model model;
+    std::memcpy(&model, record, sizeof(Model));
     // A halo row whose own fit was one plane (none stored) takes its owner's model all the same.
-    const Model& model = models[this->Ids[r]];
     if (!this->Fits.Has(r))
     {
       this->Fits.Add(r, OnePlaneFit);
@@ -1784,7 +1857,8 @@ void CreaseRun::ShareModels()
     this->Gain[r] = model.Gain;
     this->Fits.Edit(r).Hinge = model.Hinge;
     this->Fits.Edit(r).Explained = model.Explained;
-  }
+  };
+  this->RecordsFromOwners(static_cast<int>(sizeof(Model)), read, write);
 }
 
 double CreaseRun::LineDistance(vtkIdType r, const double v[3]) const
@@ -1806,6 +1880,10 @@ void CreaseRun::MarkVoters(double minAngle, vtkIdType begin, vtkIdType end)
   for (vtkIdType i = begin; i < end; ++i)
   {
     const vtkIdType r = this->Order[i];
+    if (this->Defers(r, 1))
+    {
+      continue;
+    }
     const CreaseLine& f = this->Fits[r].Hinge;
     this->Voter[this->Ids[r]] =
       f.HasLine && this->Gain[r] > MinimumGain && !(f.Angle < minAngle) ? 1 : 0;
@@ -1823,6 +1901,10 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
     for (vtkIdType i = begin; i < end; ++i)
     {
       const vtkIdType r = this->Order[i];
+      if (this->Defers(r, 2))
+      {
+        continue;
+      }
       const vtkIdType id = this->Ids[r];
       const int32_t* row = this->Row(r, buffer.data());
       const int count = featurepoints::RowLength(row, this->KFit);
@@ -2136,7 +2218,7 @@ void CreaseRun::MarkNearBorders(
     for (vtkIdType i = begin; i < end; ++i)
     {
       const vtkIdType r = this->Order[i];
-      if (this->BorderWithin(r, kb, band2, border, buffer.data()))
+      if (!this->Defers(r, 2) && this->BorderWithin(r, kb, band2, border, buffer.data()))
       {
         this->NearBorder[this->Ids[r]] = 1;
       }
@@ -2509,12 +2591,16 @@ int vtkCreaseVotingFeatures::RequestData(
       this->GlobalLabelCounts(labels, counts);
     };
     run.GlobalId = [&](vtkIdType id) { return this->GlobalId(id); };
+    run.RecordsFromOwners = [&](int bytes,
+                              const std::function<void(vtkIdType, unsigned char*)>& read,
+                              const std::function<void(vtkIdType, const unsigned char*)>& write) {
+      this->ShareHaloRecords(bytes, read, write);
+    };
     run.FromOwners = [&](void* values, int bytes) {
       this->ShareHaloValues(static_cast<unsigned char*>(values), bytes, HALO_FROM_OWNER);
     };
-    // The stages exchange the halo's values between them, collectively over the whole piece:
-    // one block holds the k nearest of every row, each pass runs once over all of them.
-    run.Whole = true;
+    // The rows that read the halo's values wait for the owners' (RunDeferred()).
+    run.Distributed = true;
   }
   float* normal = normals->GetPointer(0);
   float* vote = votes->GetPointer(0);
@@ -2532,43 +2618,67 @@ int vtkCreaseVotingFeatures::RequestData(
   std::vector<unsigned char> border(static_cast<size_t>(n), 0);
   std::vector<float> outward(3 * static_cast<size_t>(n), 0.0f);
   const bool widen = this->Borders && !this->ThinFeatures;
+  auto chooseModels = [&](vtkIdType begin, vtkIdType end) {
+    run.FitInView(normal, begin, end);
+    if (this->MultiScale)
+    {
+      run.ChooseScales(normal, std::min(SmallestScale, this->NumberOfNeighbors), detail.data(),
+        begin, end);
+    }
+    run.ChooseModels(gains->GetPointer(0), angles->GetPointer(0), begin, end);
+  };
+  auto castVotes = [&](vtkIdType begin, vtkIdType end) {
+    run.CastVotes(this->BandWidth, vote, begin, end);
+    if (widen)
+    {
+      run.MarkNearBorders(BorderNeighbors, this->BandWidth, border.data(), begin, end);
+    }
+  };
   const std::function<void(vtkIdType, vtkIdType)> passes[3] = {
     [&](vtkIdType begin, vtkIdType end) {
       run.FitCreases(normal, begin, end);
-      if (distributed)
-      {
-        run.FromOwners(run.Flat.data(), 1); // the halo's one-plane flags, which FitInView reads
-      }
       if (this->Borders)
       {
         run.FindBorders(BorderNeighbors, border.data(), outward.data(), begin, end);
       }
-    },
-    [&](vtkIdType begin, vtkIdType end) {
-      run.FitInView(normal, begin, end);
-      if (this->MultiScale)
-      {
-        run.ChooseScales(normal, std::min(SmallestScale, this->NumberOfNeighbors), detail.data(),
-          begin, end);
-      }
-      run.ChooseModels(gains->GetPointer(0), angles->GetPointer(0), begin, end);
       if (distributed)
       {
-        run.ShareModels();
+        run.MarkDeferredFits(begin, end);
       }
+    },
+    [&](vtkIdType begin, vtkIdType end) {
+      chooseModels(begin, end);
       run.MarkVoters(this->MinimumAngle, begin, end);
     },
     [&](vtkIdType begin, vtkIdType end) {
-      run.CastVotes(this->BandWidth, vote, begin, end);
-      if (widen && !run.Whole)
+      if (distributed)
       {
-        run.MarkNearBorders(BorderNeighbors, this->BandWidth, border.data(), begin, end);
+        run.MarkDeferredVotes(begin, end);
       }
+      castVotes(begin, end);
     },
   };
   if (!run.Stream(neighborhoods, this, 0.2, 0.8, passes))
   {
     return finish();
+  }
+  if (distributed)
+  {
+    // The halo's one-plane flags (which FitInView reads) and models (which the votes read) from
+    // their owners, then the rows that read them.
+    run.FromOwners(run.Flat.data(), 1);
+    const std::function<void(vtkIdType, vtkIdType)> deferred[2] = {
+      [&](vtkIdType begin, vtkIdType end) {
+        chooseModels(begin, end);
+        run.ShareModels();
+        run.MarkVoters(this->MinimumAngle, begin, end);
+      },
+      castVotes,
+    };
+    if (!run.RunDeferred(neighborhoods, deferred))
+    {
+      return finish();
+    }
   }
   std::vector<int32_t>().swap(run.Links);
   std::vector<unsigned char>().swap(run.Flat);

@@ -563,6 +563,31 @@ bool vtkFeaturePointDetector::ShareHalo(T* values, int components, int rule)
   return any != 0;
 }
 
+bool vtkFeaturePointDetector::ShareHaloRecords(int bytes,
+  const std::function<void(vtkIdType, unsigned char*)>& read,
+  const std::function<void(vtkIdType, const unsigned char*)>& write)
+{
+  if (!this->IsDistributed() || this->Owned.empty() || !this->BuildHaloLayout())
+  {
+    return false;
+  }
+  // As HALO_FROM_OWNER: the owners' records, zeros elsewhere, merged by a bitwise or.
+  const size_t size = static_cast<size_t>(bytes);
+  const size_t entries = static_cast<size_t>(this->HaloEntries) * size;
+  std::vector<unsigned char> local(entries, 0), shared(entries, 0);
+  for (const auto& answer : this->HaloAnswers)
+  {
+    read(answer.second, local.data() + answer.first * size);
+  }
+  this->Controller->AllReduce(local.data(), shared.data(), static_cast<vtkIdType>(entries),
+    vtkCommunicator::BITWISE_OR_OP);
+  for (const auto& request : this->HaloRequests)
+  {
+    write(request.second, shared.data() + request.first * size);
+  }
+  return true;
+}
+
 bool vtkFeaturePointDetector::ShareHaloValues(unsigned char* values, int components, int rule)
 {
   return this->ShareHalo(values, components, rule);

@@ -336,6 +336,16 @@ protected:
   ///@}
 
   /**
+   * Distributed runs: HALO_FROM_OWNER for a record of `bytes` bytes a point that the method keeps
+   * elsewhere than in a per-point array (a fit, a model): `read(i, record)` fills the record of
+   * point i where this process owns a point that others hold, `write(i, record)` takes the
+   * owner's record for a halo point i. Only the halo's records are buffered. Collective, as
+   * ShareHaloValues(); returns false in one process or without global ids.
+   */
+  bool ShareHaloRecords(int bytes, const std::function<void(vtkIdType, unsigned char*)>& read,
+    const std::function<void(vtkIdType, const unsigned char*)>& write);
+
+  /**
    * Distributed runs: the global id of point i (the numbering the method works in); i in one
    * process or when the piece carries no global ids.
    */
