@@ -1005,9 +1005,18 @@ struct CreaseRun
     const std::function<void(vtkIdType, const unsigned char*)>&)>
     RecordsFromOwners;
   bool IsOwn(vtkIdType id) const { return !this->Own || this->Own[id] != 0; }
-  // Whether the current pass leaves row r out: pass 1 or 2 of Stream() on a deferred row.
+  // Whether the current pass leaves row r out: a halo row (whose values come from its owner),
+  // or pass 1 or 2 of Stream() on a deferred row.
   bool Defers(vtkIdType r, int pass) const
   {
+    if (!this->IsOwn(this->Ids[r]))
+    {
+      return true;
+    }
+    if (pass == 0)
+    {
+      return false;
+    }
     const std::vector<unsigned char>& deferred = pass == 1 ? this->DeferFits : this->DeferVotes;
     return !this->Deferring && !deferred.empty() && deferred[r];
   }
@@ -1619,7 +1628,8 @@ bool CreaseRun::RunDeferred(vtkPointCloudNeighborhoods* neighborhoods,
   {
     ++fits;
   }
-  if (!this->LoadRows(neighborhoods, [&](vtkIdType r) { return this->DeferVotes[r] != 0; }))
+  if (!this->LoadRows(neighborhoods,
+        [&](vtkIdType r) { return this->DeferVotes[r] && this->IsOwn(this->Ids[r]); }))
   {
     return false;
   }
@@ -1647,6 +1657,10 @@ void CreaseRun::FitCreases(const float* normal, vtkIdType begin, vtkIdType end)
     for (vtkIdType i = first; i < last; ++i)
     {
       const vtkIdType r = this->Order[i];
+      if (this->Defers(r, 0))
+      {
+        continue;
+      }
       const int32_t* row = this->Row(r, s.Row.data());
       const int count = featurepoints::RowLength(row, this->KFit);
       uint64_t* sheet = this->Sheets.data() + r * this->Words;
@@ -1667,7 +1681,7 @@ void CreaseRun::FitCreases(const float* normal, vtkIdType begin, vtkIdType end)
   });
   for (vtkIdType i = begin; i < end; ++i)
   {
-    if (!this->Flat[this->Ids[this->Order[i]]])
+    if (!this->Flat[this->Ids[this->Order[i]]] && !this->Defers(this->Order[i], 0))
     {
       this->Fits.Add(this->Order[i], fits[i - begin]);
     }
@@ -1880,7 +1894,7 @@ void CreaseRun::MarkVoters(double minAngle, vtkIdType begin, vtkIdType end)
   for (vtkIdType i = begin; i < end; ++i)
   {
     const vtkIdType r = this->Order[i];
-    if (this->Defers(r, 1))
+    if (this->IsOwn(this->Ids[r]) && this->Defers(r, 1))
     {
       continue;
     }
@@ -2047,6 +2061,10 @@ void CreaseRun::FindBorders(
     for (vtkIdType i = begin; i < end; ++i)
     {
       const vtkIdType r = this->Order[i];
+      if (this->Defers(r, 0))
+      {
+        continue;
+      }
       const vtkIdType id = this->Ids[r];
       // The point's kb nearest on its own sheet: on a thin wall (both sides one sheet) they
       // fold back on each other at the rim, which then shows as a border too.
