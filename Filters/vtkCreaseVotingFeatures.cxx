@@ -952,12 +952,14 @@ struct CreaseRun
   // far in units of BandWidth: a crease between two rows passes up to half their gap from both.
   std::vector<float> Across;
   std::vector<unsigned char> Flat, Voter, NearBorder;
-  // Distributed runs (see RequestData): the passes of Stream() leave out the rows that read a
-  // halo point's value before the halo has its owners' values (exchanged once Stream() is
-  // through), and RunDeferred() runs them then. By row: DeferFits, the halo's rows and those
-  // with a halo point among their ViewNeighbors nearest (what FitInView() reads), for passes 1
-  // and 2; DeferVotes, those and the rows with a DeferFits row among their K nearest (the
-  // voters CastVotes() reads), for pass 2. Deferring: RunDeferred() is running.
+  // Distributed runs (see RequestData): the halo's rows are never fitted (their owners' values
+  // replace whatever an own row would read of them), and the passes of Stream() leave out the
+  // own rows that read a halo value before the halo has its owners' values (exchanged once
+  // Stream() is through); RunDeferred() runs them then. By row: DeferFits, the halo's rows
+  // (their voter flags) and the rows with a halo point among their ViewNeighbors nearest (what
+  // FitInView() reads), for passes 1 and 2; DeferVotes, those and the rows with a DeferFits row
+  // among their K nearest (the voters CastVotes() reads), for pass 2. Deferring: RunDeferred()
+  // is running.
   bool Distributed = false;
   bool Deferring = false;
   std::vector<unsigned char> DeferFits, DeferVotes;
@@ -1083,7 +1085,7 @@ struct CreaseRun
   void MarkDeferredFits(vtkIdType begin, vtkIdType end);
   void MarkDeferredVotes(vtkIdType begin, vtkIdType end);
   // Distributed runs, once Stream() is through and the halo has its owners' one-plane flags:
-  // the K nearest of the deferred rows (kept, see Row()), then passes[0] over the DeferFits
+  // the K nearest of the own deferred rows (kept, see Row()), then passes[0] over the DeferFits
   // rows and passes[1] over the DeferVotes rows (positions 0 to the count - 1 of Order).
   bool RunDeferred(vtkPointCloudNeighborhoods* neighborhoods,
     const std::function<void(vtkIdType, vtkIdType)> passes[2]);
@@ -1894,7 +1896,8 @@ void CreaseRun::MarkVoters(double minAngle, vtkIdType begin, vtkIdType end)
   for (vtkIdType i = begin; i < end; ++i)
   {
     const vtkIdType r = this->Order[i];
-    if (this->IsOwn(this->Ids[r]) && this->Defers(r, 1))
+    // A halo row's flag comes from its owner's model, once ShareModels() has brought it.
+    if (this->IsOwn(this->Ids[r]) ? this->Defers(r, 1) : !this->Deferring)
     {
       continue;
     }
