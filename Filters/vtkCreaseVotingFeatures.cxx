@@ -1486,16 +1486,24 @@ bool CreaseRun::Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* 
     }
   };
   std::vector<vtkIdType> blockIds;
-  std::vector<int32_t> found;
+  std::vector<vtkIdType> searched; // the block's rows that are searched (all but the halo's)
+  std::vector<int32_t> found, spread;
   double y[3];
   for (vtkIdType c = 0; c < blocks; ++c)
   {
     const vtkIdType first = c * BlockRows;
     const vtkIdType count = std::min(BlockRows, this->Rows - first);
-    blockIds.resize(static_cast<size_t>(count));
+    // A halo row's k nearest are never read (its owner fits it): not searched, left empty.
+    blockIds.clear();
+    searched.clear();
     for (vtkIdType i = 0; i < count; ++i)
     {
-      blockIds[i] = this->Ids[this->Order[first + i]];
+      const vtkIdType id = this->Ids[this->Order[first + i]];
+      if (this->IsOwn(id))
+      {
+        blockIds.push_back(id);
+        searched.push_back(i);
+      }
     }
     const double begin =
       progressStart + (progressEnd - progressStart) * static_cast<double>(first) / this->Rows;
@@ -1505,6 +1513,15 @@ bool CreaseRun::Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* 
     {
       return false;
     }
+    if (static_cast<vtkIdType>(searched.size()) < count)
+    {
+      spread.assign(static_cast<size_t>(count) * this->K, -1);
+      for (size_t i = 0; i < searched.size(); ++i)
+      {
+        std::copy_n(found.begin() + i * this->K, this->K, spread.begin() + searched[i] * this->K);
+      }
+      found.swap(spread);
+    }
     this->Blocks[c].reset(new NeighborTable);
     this->Blocks[c]->Reset(count, this->K);
     this->Blocks[c]->Store(0, count, found.data());
@@ -1512,7 +1529,7 @@ bool CreaseRun::Stream(vtkPointCloudNeighborhoods* neighborhoods, vtkAlgorithm* 
     {
       const int32_t* row = found.data() + i * this->K;
       const int length = featurepoints::RowLength(row, this->K);
-      this->Reader.Get(blockIds[i], x);
+      this->Reader.Get(this->Ids[this->Order[first + i]], x);
       double radius = 0.0;
       if (length > 0)
       {

@@ -44,6 +44,8 @@ constexpr long long SampleTarget = 100000;
 constexpr double SpacingMargin = 1.25;
 // Cells per axis of the grid whose cells' boxes, widened by their points' reach, make the halo.
 constexpr int HaloCells = 8;
+// Rows of the nearest-point searches done at a time.
+constexpr size_t BlockSize = 65536;
 
 // What a row of the cloud holds besides its global id: the coordinates' type and the point
 // arrays (name, type, components), the same on every process.
@@ -162,8 +164,9 @@ struct Rows
     return out;
   }
 
-  // A vtkPolyData of the rows, one vertex cell each.
-  vtkSmartPointer<vtkPolyData> ToPolyData() const
+  // A vtkPolyData of the rows (sharing their arrays), one vertex cell each unless `verts` is
+  // false.
+  vtkSmartPointer<vtkPolyData> ToPolyData(bool verts = true) const
   {
     auto poly = vtkSmartPointer<vtkPolyData>::New();
     poly->SetPoints(this->Points);
@@ -171,7 +174,10 @@ struct Rows
     {
       poly->GetPointData()->AddArray(a);
     }
-    poly->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(this->Size()));
+    if (verts)
+    {
+      poly->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(this->Size()));
+    }
     return poly;
   }
 };
@@ -197,19 +203,27 @@ Layout LayoutOf(vtkPointSet* data)
   return layout;
 }
 
-// The rows of a point set, their global ids from `firstGid` on; false (and `error`) when it lacks
-// an array of the layout.
+// The rows of a point set, their global ids from `firstGid` on, sharing its points and arrays
+// (the rows are only read); false (and `error`) when it lacks an array of the layout.
 bool RowsOf(
   vtkPointSet* data, const Layout& layout, long long firstGid, Rows& rows, std::string& error)
 {
   const vtkIdType n = data->GetNumberOfPoints();
-  rows.Allocate(layout, n);
+  rows.Allocate(layout, 0);
+  rows.Gid.resize(n);
   if (n == 0)
   {
     return true;
   }
   std::iota(rows.Gid.begin(), rows.Gid.end(), firstGid);
-  rows.Points->GetData()->DeepCopy(data->GetPoints()->GetData());
+  if (data->GetPoints()->GetDataType() == layout.PointType)
+  {
+    rows.Points = data->GetPoints();
+  }
+  else
+  {
+    rows.Points->GetData()->DeepCopy(data->GetPoints()->GetData()); // to the first piece's type
+  }
   for (size_t a = 0; a < layout.Names.size(); ++a)
   {
     vtkDataArray* array = data->GetPointData()->GetArray(layout.Names[a].c_str());
@@ -219,7 +233,7 @@ bool RowsOf(
       error = "point array " + layout.Names[a] + " differs from the first piece's";
       return false;
     }
-    rows.Arrays[a]->DeepCopy(array);
+    rows.Arrays[a] = array;
   }
   return true;
 }
@@ -296,8 +310,9 @@ bool Exchange(MPI_Comm comm, const Layout& layout, const Rows& rows,
   return true;
 }
 
-// All rows on process 0, in global id order (the ids run from 0 to their count minus 1).
-bool GatherInOrder(MPI_Comm comm, const Layout& layout, const Rows& rows, Rows& all)
+// All rows on process 0, in global id order (the ids run from 0 to their count minus 1); `rows`
+// is emptied once packed.
+bool GatherInOrder(MPI_Comm comm, const Layout& layout, Rows& rows, Rows& all)
 {
   int nProcs = 0, rank = 0;
   MPI_Comm_size(comm, &nProcs);
@@ -305,11 +320,12 @@ bool GatherInOrder(MPI_Comm comm, const Layout& layout, const Rows& rows, Rows& 
   const size_t rowBytes = layout.RowBytes();
   const long long bytes = static_cast<long long>(rows.Size()) * static_cast<long long>(rowBytes);
   int ok = bytes <= INT_MAX ? 1 : 0;
-  std::vector<unsigned char> out(std::max<long long>(bytes, 1));
+  std::vector<unsigned char> out(std::max<long long>(ok ? bytes : 1, 1));
   for (vtkIdType i = 0; i < rows.Size() && ok; ++i)
   {
     rows.Pack(i, out.data() + rowBytes * i);
   }
+  rows = Rows();
   int count = ok ? static_cast<int>(bytes) : 0;
   std::vector<int> counts(nProcs), offsets(nProcs);
   MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
@@ -330,23 +346,27 @@ bool GatherInOrder(MPI_Comm comm, const Layout& layout, const Rows& rows, Rows& 
   std::vector<unsigned char> in(rank == 0 ? std::max<long long>(total, 1) : 1);
   MPI_Gatherv(out.data(), count, MPI_BYTE, in.data(), counts.data(), offsets.data(), MPI_BYTE, 0,
     comm);
+  std::vector<unsigned char>().swap(out);
   if (rank != 0)
   {
     all.Allocate(layout, 0);
     return true;
   }
+  // Each row straight to its place: its global id.
   const vtkIdType n = static_cast<vtkIdType>(total / static_cast<long long>(rowBytes));
-  Rows gathered;
-  gathered.Allocate(layout, n);
+  all.Allocate(layout, n);
+  std::vector<unsigned char> placed(static_cast<size_t>(n), 0);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    gathered.Unpack(i, in.data() + rowBytes * i);
+    long long gid = -1;
+    std::memcpy(&gid, in.data() + rowBytes * i, sizeof(gid));
+    if (gid < 0 || gid >= n || placed[gid])
+    {
+      return false; // not a numbering of the rows: never so for the pieces of one cloud
+    }
+    placed[gid] = 1;
+    all.Unpack(static_cast<vtkIdType>(gid), in.data() + rowBytes * i);
   }
-  std::vector<vtkIdType> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-    [&](vtkIdType a, vtkIdType b) { return gathered.Gid[a] < gathered.Gid[b]; });
-  all = gathered.Select(layout, order);
   return true;
 }
 
@@ -468,11 +488,15 @@ void LeafRegion(const std::vector<SplitNode>& nodes, int rank, double region[6])
 
 // 1 for the valid points whose reach (factor times the distance to their k-th nearest point, or
 // to their nearest point at a nonzero distance if further), or whose box of half-width `width`,
-// may leave `region`. The bound: on a
-// sparse grid of cells of side c (a sample's median k-th nearest distance: a block of 27 cells
-// mostly suffices, so the bound costs little), a point's
-// k nearest lie within the block of (2m + 1)^3 cells around its cell once the block holds k + 1
-// points at two places at least, so within sqrt(3) (m + 1) c of it.
+// may leave `region`. Two bounds, each for a whole cell of a sparse grid of cells of side c (a
+// sample's median k-th nearest distance):
+// - a point's k nearest lie within the block of (2m + 1)^3 cells around its cell once the block
+//   holds k + 1 points at two places at least, so within sqrt(3) (m + 1) c of it (a block of 27
+//   cells mostly suffices, so this bound costs little);
+// - in a cell that bound does not keep inside, one point y gets its exact k-th nearest distance
+//   r(y), and each other point x the bound r(y) + |x - y|.
+// At 10,000,000 points split in 2, the second bound leaves about 2 % of a process's points to the
+// exact search where the first left up to a third.
 std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighborhoods,
   vtkPoints* points, const std::vector<vtkIdType>& valid, int k, double factor,
   const double region[6], double width)
@@ -529,10 +553,14 @@ std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighbor
     bool Interior = false; // every point's reach stays inside the region
     double Box[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
       VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    vtkIdType Representative = -1; // see below
+    double Radius = 0.0;
   };
   auto keyOf = [&](const int64_t ijk[3]) { return (ijk[0] * Range + ijk[1]) * Range + ijk[2]; };
-  std::unordered_map<int64_t, Cell> cells;
-  std::vector<int64_t> keys(n, -1);
+  std::unordered_map<int64_t, vtkIdType> index; // a cell's key to its place in `cells`
+  std::vector<Cell> cells;
+  std::vector<int64_t> keys;      // by cell
+  std::vector<vtkIdType> cellOf(n, -1); // by point
   for (vtkIdType i : valid)
   {
     points->GetPoint(i, x);
@@ -541,8 +569,15 @@ std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighbor
     {
       ijk[c] = static_cast<int64_t>(std::floor((x[c] - b[2 * c]) / side));
     }
-    keys[i] = keyOf(ijk);
-    Cell& cell = cells[keys[i]];
+    const int64_t key = keyOf(ijk);
+    auto added = index.emplace(key, static_cast<vtkIdType>(cells.size()));
+    if (added.second)
+    {
+      cells.emplace_back();
+      keys.push_back(key);
+    }
+    cellOf[i] = added.first->second;
+    Cell& cell = cells[cellOf[i]];
     ++cell.Count;
     for (int c = 0; c < 3; ++c)
     {
@@ -551,9 +586,9 @@ std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighbor
     }
   }
   constexpr int MaximumRings = 4;
-  for (auto& entry : cells)
+  for (size_t e = 0; e < cells.size(); ++e)
   {
-    const int64_t key = entry.first;
+    const int64_t key = keys[e];
     const int64_t ijk[3] = { key / (Range * Range), (key / Range) % Range, key % Range };
     vtkIdType count = 0;
     double box[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
@@ -577,16 +612,17 @@ std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighbor
             {
               continue;
             }
-            auto found = cells.find(keyOf(other));
-            if (found == cells.end())
+            auto found = index.find(keyOf(other));
+            if (found == index.end())
             {
               continue;
             }
-            count += found->second.Count;
+            const Cell& near = cells[found->second];
+            count += near.Count;
             for (int c = 0; c < 3; ++c)
             {
-              box[2 * c] = std::min(box[2 * c], found->second.Box[2 * c]);
-              box[2 * c + 1] = std::max(box[2 * c + 1], found->second.Box[2 * c + 1]);
+              box[2 * c] = std::min(box[2 * c], near.Box[2 * c]);
+              box[2 * c + 1] = std::max(box[2 * c + 1], near.Box[2 * c + 1]);
             }
           }
         }
@@ -604,20 +640,66 @@ std::vector<unsigned char> NearRegionBorder(vtkPointCloudNeighborhoods* neighbor
     }
     const double bound =
       std::max(factor * std::sqrt(3.0) * (rings + 1) * side * (1.0 + 1e-9), width);
-    const double* own = entry.second.Box;
+    const double* own = cells[e].Box;
     bool inside = true;
     for (int c = 0; c < 3 && inside; ++c)
     {
       inside = own[2 * c] - bound > region[2 * c] && own[2 * c + 1] + bound < region[2 * c + 1];
     }
-    entry.second.Interior = inside;
+    cells[e].Interior = inside;
+  }
+  // In the other cells, one point's exact reach bounds the others': the distance to the k-th
+  // nearest grows by at most the distance moved, r(x) <= r(y) + |x - y| (and where x's k nearest
+  // coincide with it, y is a point at a nonzero distance from x within that bound).
+  std::vector<vtkIdType> representatives;
+  for (vtkIdType i : valid)
+  {
+    Cell& cell = cells[cellOf[i]];
+    if (!cell.Interior && cell.Representative < 0)
+    {
+      cell.Representative = i;
+      representatives.push_back(i);
+    }
+  }
+  for (size_t start = 0; start < representatives.size(); start += BlockSize)
+  {
+    const std::vector<vtkIdType> block(representatives.begin() + start,
+      representatives.begin() + std::min(representatives.size(), start + BlockSize));
+    neighborhoods->FindNearestNeighbors(k, block, table);
+    for (size_t r = 0; r < block.size(); ++r)
+    {
+      const int32_t last = table[r * k + k - 1];
+      if (last >= 0)
+      {
+        points->GetPoint(block[r], x);
+        points->GetPoint(last, y);
+        cells[cellOf[block[r]]].Radius = std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
+      }
+    }
   }
   for (vtkIdType i : valid)
   {
-    if (cells[keys[i]].Interior)
+    const Cell& cell = cells[cellOf[i]];
+    if (cell.Interior)
     {
       near[i] = 0;
+      continue;
     }
+    if (!(cell.Radius > 0.0))
+    {
+      continue; // the exact reach decides
+    }
+    points->GetPoint(i, x);
+    points->GetPoint(cell.Representative, y);
+    const double bound = std::max(
+      factor * (cell.Radius + std::sqrt(vtkMath::Distance2BetweenPoints(x, y))) * (1.0 + 1e-9),
+      width);
+    bool inside = true;
+    for (int c = 0; c < 3 && inside; ++c)
+    {
+      inside = x[c] - bound > region[2 * c] && x[c] + bound < region[2 * c + 1];
+    }
+    near[i] = inside ? 0 : 1;
   }
   return near;
 }
@@ -936,6 +1018,22 @@ int vtkDistributedFeaturePoints::RequestData(
   vtkPolyData* result = nullptr;
   for (int attempt = 0;; ++attempt)
   {
+    if (attempt > 0)
+    {
+      // The own rows again, from the piece: the detector ran without them.
+      const vtkIdType n = pieceGids->GetNumberOfValues();
+      piece.Gid.resize(n);
+      std::vector<vtkIdType> ownRows;
+      for (vtkIdType j = 0; j < n; ++j)
+      {
+        piece.Gid[j] = pieceGids->GetValue(j);
+        if (ghosts->GetValue(j) == 0)
+        {
+          ownRows.push_back(j);
+        }
+      }
+      own = piece.Select(layout, ownRows);
+    }
     // 3. The reach of each own point, and the boxes of the halo.
     std::vector<double> boxes; // 6 per box: lo x, lo y, lo z, hi x, hi y, hi z
     {
@@ -964,7 +1062,6 @@ int vtkDistributedFeaturePoints::RequestData(
         }
       }
       std::vector<int32_t> table;
-      neighborhoods->FindNearestNeighbors(k, ids, table);
       const double* b = neighborhoods->GetBounds();
       double cell[3];
       for (int c = 0; c < 3; ++c)
@@ -980,13 +1077,19 @@ int vtkDistributedFeaturePoints::RequestData(
       double x[3], y[3];
       for (size_t r = 0; r < ids.size(); ++r)
       {
+        if (r % BlockSize == 0)
+        {
+          const std::vector<vtkIdType> block(
+            ids.begin() + r, ids.begin() + std::min(ids.size(), r + BlockSize));
+          neighborhoods->FindNearestNeighbors(k, block, table);
+        }
         const vtkIdType i = ids[r];
         own.Points->GetPoint(i, x);
         // The distance to the k-th nearest own point, or, where the k nearest all coincide with
         // the point, to the nearest own point at a nonzero distance (the mean spacing needs it).
         // Unbounded when there is none.
         double radius = VTK_DOUBLE_MAX;
-        const int32_t last = table[r * k + k - 1];
+        const int32_t last = table[(r % BlockSize) * k + k - 1];
         if (last >= 0)
         {
           own.Points->GetPoint(last, y);
@@ -1134,7 +1237,11 @@ int vtkDistributedFeaturePoints::RequestData(
       }
     }
     halo = Rows();
-    pieceData = piece.ToPolyData();
+    // The detector reads neither the own rows (the piece holds them), nor the piece's ids
+    // (pieceGids holds them), nor vertex cells: none is kept while it runs.
+    own = Rows();
+    std::vector<long long>().swap(piece.Gid);
+    pieceData = piece.ToPolyData(false);
     pieceData->GetPointData()->AddArray(ghosts);
     pieceData->GetPointData()->AddArray(pieceGids);
 
@@ -1175,24 +1282,37 @@ int vtkDistributedFeaturePoints::RequestData(
   this->FindReplacedArrays(pieceData, result);
 
   // 7. The own points' results.
-  vtkNew<vtkPolyData> resultNoGhosts;
-  resultNoGhosts->SetPoints(result->GetPoints());
-  resultNoGhosts->GetPointData()->ShallowCopy(result->GetPointData());
-  resultNoGhosts->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
-  resultNoGhosts->GetPointData()->RemoveArray(vtkFeaturePointDetector::GetPieceGlobalIdsArrayName());
-  const Layout outLayout = LayoutOf(resultNoGhosts);
-  Rows resultRows;
-  RowsOf(resultNoGhosts, outLayout, 0, resultRows, error);
-  std::copy(piece.Gid.begin(), piece.Gid.end(), resultRows.Gid.begin());
-  std::vector<vtkIdType> ownRows;
-  for (vtkIdType j = 0; j < piece.Size(); ++j)
+  vtkNew<vtkFieldData> fieldData;
+  fieldData->ShallowCopy(result->GetFieldData());
+  Layout outLayout;
+  Rows ownResult;
   {
-    if (ghosts->GetValue(j) == 0)
+    vtkNew<vtkPolyData> resultNoGhosts;
+    resultNoGhosts->SetPoints(result->GetPoints());
+    resultNoGhosts->GetPointData()->ShallowCopy(result->GetPointData());
+    resultNoGhosts->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+    resultNoGhosts->GetPointData()->RemoveArray(
+      vtkFeaturePointDetector::GetPieceGlobalIdsArrayName());
+    outLayout = LayoutOf(resultNoGhosts);
+    Rows resultRows;
+    RowsOf(resultNoGhosts, outLayout, 0, resultRows, error);
+    std::vector<vtkIdType> ownRows;
+    for (vtkIdType j = 0; j < pieceGids->GetNumberOfValues(); ++j)
     {
-      ownRows.push_back(j);
+      resultRows.Gid[j] = pieceGids->GetValue(j);
+      if (ghosts->GetValue(j) == 0)
+      {
+        ownRows.push_back(j);
+      }
     }
+    ownResult = resultRows.Select(outLayout, ownRows);
   }
-  Rows ownResult = resultRows.Select(outLayout, ownRows);
+  // Neither the piece nor the detector's output is read again: released before the gather.
+  detector->SetInputData(nullptr);
+  result->ReleaseData();
+  result = nullptr;
+  pieceData = nullptr;
+  piece = Rows();
   vtkSmartPointer<vtkPolyData> full;
   if (this->GatherOutput)
   {
@@ -1216,7 +1336,7 @@ int vtkDistributedFeaturePoints::RequestData(
     }
     full->GetPointData()->AddArray(gids);
   }
-  full->GetFieldData()->ShallowCopy(result->GetFieldData());
+  full->GetFieldData()->ShallowCopy(fieldData);
   if (const char* scalars = detector->GetScoreArrayName())
   {
     full->GetPointData()->SetActiveScalars(scalars);
