@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -75,16 +76,49 @@ double vtkFeaturePointDetector::GlobalUpperMedian(std::vector<double>& values) c
   {
     return featurepoints::UpperMedian(values);
   }
-  // The median of the union is a function of the values only (not of their order): gathered on
-  // the first process, which has them all.
-  std::vector<double> all(values);
-  this->GatherScores(all, nullptr);
-  double median = 0.0;
-  if (this->Controller->GetLocalProcessId() == 0)
+  // The value of rank n / 2 of the union (a function of the values only, not of their order),
+  // selected a byte at a time: each value has a 64-bit key in the values' order, and each round
+  // counts the values whose key starts with the bytes chosen so far by their next byte, the
+  // counts summed over the processes. Exact, in 8 rounds, and no process holds more than its own
+  // values.
+  long long local = static_cast<long long>(values.size()), total = 0;
+  this->Controller->AllReduce(&local, &total, 1, vtkCommunicator::SUM_OP);
+  if (total == 0)
   {
-    median = featurepoints::UpperMedian(all);
+    return 0.0;
   }
-  this->Controller->Broadcast(&median, 1, 0);
+  constexpr uint64_t Sign = uint64_t(1) << 63;
+  auto keyOf = [](double v) {
+    v = v == 0.0 ? 0.0 : v; // -0 as +0: equal values, one key
+    uint64_t u = 0;
+    std::memcpy(&u, &v, sizeof(u));
+    return (u & Sign) ? ~u : (u | Sign);
+  };
+  uint64_t prefix = 0;
+  long long rank = total / 2;
+  for (int shift = 56; shift >= 0; shift -= 8)
+  {
+    const uint64_t chosen = shift == 56 ? 0 : ~uint64_t(0) << (shift + 8);
+    long long counts[256] = {}, sums[256] = {};
+    for (double v : values)
+    {
+      const uint64_t key = keyOf(v);
+      if ((key & chosen) == prefix)
+      {
+        ++counts[(key >> shift) & 0xff];
+      }
+    }
+    this->Controller->AllReduce(counts, sums, 256, vtkCommunicator::SUM_OP);
+    int byte = 0;
+    while (byte < 255 && rank >= sums[byte])
+    {
+      rank -= sums[byte++];
+    }
+    prefix |= static_cast<uint64_t>(byte) << shift;
+  }
+  const uint64_t u = (prefix & Sign) ? (prefix & ~Sign) : ~prefix;
+  double median = 0.0;
+  std::memcpy(&median, &u, sizeof(median));
   return median;
 }
 
@@ -279,6 +313,7 @@ void vtkFeaturePointDetector::ResetFigures()
   this->NumberOfFeaturePoints = 0;
   this->RequiredHaloWidth = 0.0;
   this->OriginalIds.clear();
+  this->PieceGlobalIds = nullptr;
 }
 
 double vtkFeaturePointDetector::AutomaticThreshold(std::vector<double>& scores, double sigmas)
@@ -365,7 +400,7 @@ bool vtkFeaturePointDetector::PrepareNeighborhoods(
 void vtkFeaturePointDetector::PrepareOwnership(vtkPointCloudNeighborhoods* neighborhoods)
 {
   this->Owned.clear();
-  this->GlobalIds.clear();
+  this->PieceGlobalIds = nullptr;
   this->HaloLayoutReady = false;
   this->HaloEntries = 0;
   this->HaloRequests.clear();
@@ -392,14 +427,10 @@ void vtkFeaturePointDetector::PrepareOwnership(vtkPointCloudNeighborhoods* neigh
   }
   vtkIdTypeArray* gids = input ? vtkIdTypeArray::SafeDownCast(
     input->GetPointData()->GetArray(GetPieceGlobalIdsArrayName())) : nullptr;
-  if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1)
+  if (gids && gids->GetNumberOfTuples() == n && gids->GetNumberOfComponents() == 1 &&
+    (this->OriginalIds.empty() || static_cast<vtkIdType>(this->OriginalIds.size()) == n))
   {
-    const bool renumbered = static_cast<vtkIdType>(this->OriginalIds.size()) == n;
-    this->GlobalIds.resize(static_cast<size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      this->GlobalIds[i] = gids->GetValue(renumbered ? this->OriginalIds[i] : i);
-    }
+    this->PieceGlobalIds = gids->GetPointer(0); // read through OriginalIds (the input holds it)
   }
   // The bounds of the whole cloud: those of every process's own valid points.
   double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
@@ -437,7 +468,7 @@ bool vtkFeaturePointDetector::BuildHaloLayout()
     return true;
   }
   const vtkIdType n = static_cast<vtkIdType>(this->Owned.size());
-  int ok = static_cast<vtkIdType>(this->GlobalIds.size()) == n ? 1 : 0;
+  int ok = this->PieceGlobalIds ? 1 : 0;
   int allOk = 0;
   this->Controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
   if (!allOk)
@@ -450,7 +481,7 @@ bool vtkFeaturePointDetector::BuildHaloLayout()
   std::vector<std::pair<long long, vtkIdType>> halo, own;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    (this->Owned[i] ? own : halo).emplace_back(this->GlobalIds[i], i);
+    (this->Owned[i] ? own : halo).emplace_back(this->GlobalId(i), i);
   }
   std::sort(halo.begin(), halo.end());
   std::sort(own.begin(), own.end());
@@ -862,6 +893,7 @@ int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* out
     }
   }
   this->OriginalIds.clear();
+  this->PieceGlobalIds = nullptr; // read through OriginalIds
   vtkPoints* points = input->GetPoints();
   vtkNew<vtkPolyData> full;
   if (points)

@@ -284,8 +284,8 @@ protected:
    * Controller of more than one process. IsOwned(i): point i (in the numbering the method works
    * in) belongs to this process's piece, not to its halo; always true in one process. The
    * Global*() helpers reduce over all processes (every process must call them, in the same
-   * order) and are the local figure in one process. GlobalUpperMedian() gathers the values to the
-   * first process. CloudBounds()/CloudCenter(): the bounds of the valid points of the whole cloud
+   * order) and are the local figure in one process. GlobalUpperMedian() selects the value of rank
+   * n / 2 by counts summed over the processes (no process gathers the values). CloudBounds()/CloudCenter(): the bounds of the valid points of the whole cloud
    * (neighborhoods->GetBounds()/GetCenter() in one process).
    */
   bool IsDistributed() const;
@@ -351,7 +351,8 @@ protected:
    */
   long long GlobalId(vtkIdType i) const
   {
-    return this->GlobalIds.empty() ? static_cast<long long>(i) : this->GlobalIds[i];
+    return !this->PieceGlobalIds ? static_cast<long long>(i)
+      : this->PieceGlobalIds[this->OriginalIds.empty() ? i : this->OriginalIds[i]];
   }
 
   /**
@@ -397,8 +398,8 @@ protected:
   // Distributed runs: 1 for the piece's own points, 0 for the halo, in the numbering the method
   // works in (empty: every point is own); the bounds of the whole cloud's valid points.
   std::vector<unsigned char> Owned;
-  // Distributed runs: the global id of each point (same numbering; empty without the array).
-  std::vector<long long> GlobalIds;
+  // Distributed runs: the input's global ids (the piece's array, in input order; null without it).
+  const vtkIdType* PieceGlobalIds = nullptr;
   // ShareHaloValues' layout, built at its first call in a run: every process's halo points'
   // global ids gathered in one list of entries; (entry, point) of this process's halo points and
   // of the entries that name its own points.
