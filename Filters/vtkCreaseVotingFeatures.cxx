@@ -1656,10 +1656,6 @@ bool CreaseRun::RunDeferred(vtkPointCloudNeighborhoods* neighborhoods,
   passes[0](0, fits);
   passes[1](0, static_cast<vtkIdType>(this->Order.size()));
   this->Deferring = false;
-  for (const int32_t r : this->Order)
-  {
-    this->NearBorder[this->Ids[r]] = 1; // the border band's test reads the halo's values
-  }
   std::vector<int32_t>().swap(this->Order);
   std::vector<unsigned char>().swap(this->DeferFits);
   std::vector<unsigned char>().swap(this->DeferVotes);
@@ -2385,7 +2381,9 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
     for (vtkIdType r = begin; r < end; ++r)
     {
       const vtkIdType id = this->Ids[r];
-      if (mask[id] && this->Direction(r, type, outward, minAngle, kb, q, t))
+      // A halo point's direction, and whether it is a corner, are its owner's (below; its row
+      // may not be loaded).
+      if (mask[id] && this->IsOwn(id) && this->Direction(r, type, outward, minAngle, kb, q, t))
       {
         directed[id] = 1;
         for (int c = 0; c < 3; ++c)
@@ -2412,7 +2410,7 @@ void CreaseRun::ClassifyFeatures(const unsigned char* mask, const unsigned char*
     for (vtkIdType r = begin; r < end; ++r)
     {
       const vtkIdType id = this->Ids[r];
-      if (!mask[id])
+      if (!mask[id] || !this->IsOwn(id))
       {
         continue;
       }
@@ -2702,9 +2700,14 @@ int vtkCreaseVotingFeatures::RequestData(
   }
   if (distributed)
   {
-    // The halo's one-plane flags (which FitInView reads) and models (which the votes read) from
-    // their owners, then the rows that read them.
+    // The halo's one-plane flags (which FitInView reads), border flags (which the border band's
+    // preselection reads) and models (which the votes read) from their owners, then the rows
+    // that read them.
     run.FromOwners(run.Flat.data(), 1);
+    if (this->Borders)
+    {
+      run.FromOwners(border.data(), 1);
+    }
     const std::function<void(vtkIdType, vtkIdType)> deferred[2] = {
       [&](vtkIdType begin, vtkIdType end) {
         chooseModels(begin, end);
