@@ -1085,10 +1085,12 @@ struct CreaseRun
   void MarkDeferredFits(vtkIdType begin, vtkIdType end);
   void MarkDeferredVotes(vtkIdType begin, vtkIdType end);
   // Distributed runs, once Stream() is through and the halo has its owners' one-plane flags:
-  // the K nearest of the own deferred rows (kept, see Row()), then passes[0] over the DeferFits
-  // rows and passes[1] over the DeferVotes rows (positions 0 to the count - 1 of Order).
+  // the K nearest of the own deferred rows (kept, see Row()), then passes[0] (the models) over
+  // the DeferFits rows, ShareModels(), passes[1] (the voters) over the DeferFits rows and
+  // passes[2] (the votes) over the DeferVotes rows (positions in Order), each a block of rows at
+  // a time as in Stream().
   bool RunDeferred(vtkPointCloudNeighborhoods* neighborhoods,
-    const std::function<void(vtkIdType, vtkIdType)> passes[2]);
+    const std::function<void(vtkIdType, vtkIdType)> passes[3]);
   // Steps 1b-3 at the widest scale, rows begin to end - 1: the sheet of every point, its
   // two-plane fit.
   void FitCreases(const float* normal, vtkIdType begin, vtkIdType end);
@@ -1628,7 +1630,7 @@ void CreaseRun::MarkDeferredVotes(vtkIdType begin, vtkIdType end)
 }
 
 bool CreaseRun::RunDeferred(vtkPointCloudNeighborhoods* neighborhoods,
-  const std::function<void(vtkIdType, vtkIdType)> passes[2])
+  const std::function<void(vtkIdType, vtkIdType)> passes[3])
 {
   // Order: the DeferFits rows, then the other DeferVotes rows.
   this->Order.clear();
@@ -1652,9 +1654,19 @@ bool CreaseRun::RunDeferred(vtkPointCloudNeighborhoods* neighborhoods,
   {
     return false;
   }
+  // A block at a time, as the stream runs them: the passes' scratch (the fits of a block) stays
+  // the size of a block.
+  auto inBlocks = [](const std::function<void(vtkIdType, vtkIdType)>& pass, vtkIdType count) {
+    for (vtkIdType first = 0; first < count; first += BlockRows)
+    {
+      pass(first, std::min(first + BlockRows, count));
+    }
+  };
   this->Deferring = true;
-  passes[0](0, fits);
-  passes[1](0, static_cast<vtkIdType>(this->Order.size()));
+  inBlocks(passes[0], fits);
+  this->ShareModels();
+  inBlocks(passes[1], fits);
+  inBlocks(passes[2], static_cast<vtkIdType>(this->Order.size()));
   this->Deferring = false;
   std::vector<int32_t>().swap(this->Order);
   std::vector<unsigned char>().swap(this->DeferFits);
@@ -2708,12 +2720,9 @@ int vtkCreaseVotingFeatures::RequestData(
     {
       run.FromOwners(border.data(), 1);
     }
-    const std::function<void(vtkIdType, vtkIdType)> deferred[2] = {
-      [&](vtkIdType begin, vtkIdType end) {
-        chooseModels(begin, end);
-        run.ShareModels();
-        run.MarkVoters(this->MinimumAngle, begin, end);
-      },
+    const std::function<void(vtkIdType, vtkIdType)> deferred[3] = {
+      chooseModels,
+      [&](vtkIdType begin, vtkIdType end) { run.MarkVoters(this->MinimumAngle, begin, end); },
       castVotes,
     };
     if (!run.RunDeferred(neighborhoods, deferred))
