@@ -315,6 +315,9 @@ struct CreaseLine
   bool HasLine = false;
   float LinePoint[3] = { 0.0f, 0.0f, 0.0f }; // relative to the point
   float LineDirection[3] = { 0.0f, 0.0f, 0.0f };
+  // Unit directions from the line into each half-plane, across the line (towards the centroid
+  // of each half's points): with the line, the hinge's cross-section.
+  float Rays[2][3] = { { 0.0f, 0.0f, 0.0f }, { 0.0f, 0.0f, 0.0f } };
   // The planes' centroids lie on the inner side of the line (against the fitted point's normal):
   // a convex crease. False for a concave one.
   bool Convex = true;
@@ -368,6 +371,17 @@ void StoreLine(CreaseLine& line, double rss2, double sine, bool hasLine, const E
   {
     line.LinePoint[c] = hasLine ? static_cast<float>(x[c]) : 0.0f;
     line.LineDirection[c] = hasLine ? static_cast<float>(t[c]) : 0.0f;
+  }
+  const Eigen::Vector3d* centroids[2] = { &ca, &cb };
+  for (int k = 0; k < 2; ++k)
+  {
+    Eigen::Vector3d ray = *centroids[k] - x;
+    ray -= ray.dot(t) * t;
+    const double length = ray.norm();
+    for (int c = 0; c < 3; ++c)
+    {
+      line.Rays[k][c] = hasLine && length > 0.0 ? static_cast<float>(ray[c] / length) : 0.0f;
+    }
   }
 }
 
@@ -971,10 +985,14 @@ struct CreaseRun
   // Per row: how many of the row's sheet members the chosen fit and the vote use (the point's
   // scale), and the model's gain in noise variances.
   std::vector<int32_t> Scale;
+  // Squared distance from each row's point to the farthest point of its fit (infinite where the
+  // fit spans the widest neighbourhood): the reach within which its line says anything.
+  std::vector<float> Reach2;
   std::vector<double> Gain;
   double Variance = 0.0;
-  // Per point: the median distance to the lines that vote for it (the consensus distance to the
-  // crease, which no single noisy fit gives), -1 where none does. Set by CastVotes().
+  // Per point: the median distance across the crease from the lines that vote for it (along the
+  // nearer half-plane of each: the consensus distance to the crease, which no single noisy fit
+  // gives), -1 where none does. Set by CastVotes().
   std::vector<float> Offset;
   // Distributed runs (see RequestData): by point id, 1 for the piece's own points (null: all);
   // the upper median of per-row values over the own rows of every process; labels made to agree
@@ -1133,7 +1151,7 @@ struct CreaseRun
   void ClassifyFeatures(const unsigned char* mask, const unsigned char* border,
     const float* outward, double minAngle, int kb, unsigned char* type) const;
   // One point wide: keeps the crease and corner points whose consensus distance to the crease
-  // (Offset) is within half their local spacing (of the ks nearest), widened by the noise, and
+  // (Offset, across the face) is within half their local spacing (of the ks nearest), and
   // whose vote reaches `trusted` (enough voters for the distance to be a consensus), and across
   // each border the outermost points (among their kt nearest).
   vtkIdType Thin(const unsigned char* type, const float* outward, const float* vote,
@@ -1147,6 +1165,10 @@ private:
   double LocalSpacing(vtkIdType r, int ks) const;
   // Distance from a point at offset v of the fitted point to row r's line.
   double LineDistance(vtkIdType r, const double v[3]) const;
+  // How far from row r's line, along the nearer of its half-planes, the point at offset v of the
+  // fitted point lies (0 beyond the line): its distance from the crease across the face it lies
+  // on, which noise along that face's normal does not change.
+  double HingeAcross(vtkIdType r, const double v[3]) const;
   // The unit direction of row r's feature point: its fit's crease line, or along its border (the
   // tangent plane of its kb nearest); false where it has none.
   bool Direction(vtkIdType r, const unsigned char* type, const float* outward, double minAngle,
@@ -1343,6 +1365,7 @@ void CreaseRun::PrepareFits(vtkPointCloudNeighborhoods* neighborhoods)
   this->Fits.Reset(this->Rows);
   this->Sheets.assign(static_cast<size_t>(this->Rows) * this->Words, 0);
   this->Scale.assign(static_cast<size_t>(this->Rows), this->KFit);
+  this->Reach2.assign(static_cast<size_t>(this->Rows), std::numeric_limits<float>::infinity());
   this->Gain.assign(static_cast<size_t>(this->Rows), 0.0);
   this->Offset.assign(static_cast<size_t>(this->N), -1.0f);
   // By point id: its SheetLinks nearest (the start of its row), -1 where none. The one-sheet
@@ -1792,6 +1815,7 @@ void CreaseRun::ChooseScales(
       // fit only within the faces' curvature, never within the noise of a clean cloud.
       CreaseFit fit, curvedFit;
       int curvedScale = 0;
+      float curvedReach2 = 0.0f, lastReach2 = 0.0f;
       s.Row.resize(static_cast<size_t>(this->K));
       const int32_t* row = this->Row(r, s.Row.data());
       // Scales KFit / 2, KFit / 4, ... down to `smallest` itself.
@@ -1800,17 +1824,25 @@ void CreaseRun::ChooseScales(
       {
         this->GatherSheet(r, row, scale, normal, s);
         fit = FitGathered(s, this->Variance, false);
+        float reach2 = 0.0f;
+        for (const Eigen::Vector3d& q : s.P)
+        {
+          reach2 = std::max(reach2, static_cast<float>(q.squaredNorm()));
+        }
         if (Explains(fit, this->Variance))
         {
           this->Fits.Edit(r) = fit;
           this->Scale[r] = scale;
+          this->Reach2[r] = reach2;
           break;
         }
         if (curvedScale == 0 && curvedExplains(fit))
         {
           curvedFit = fit;
           curvedScale = scale;
+          curvedReach2 = reach2;
         }
+        lastReach2 = reach2;
       }
       if (this->Scale[r] != this->KFit || fit.Points == 0)
       {
@@ -1820,6 +1852,7 @@ void CreaseRun::ChooseScales(
       {
         this->Fits.Edit(r) = curvedFit;
         this->Scale[r] = curvedScale;
+        this->Reach2[r] = curvedReach2;
         continue;
       }
       // Nothing explains even the smallest scale, not even the curved hinge: more than two
@@ -1832,6 +1865,7 @@ void CreaseRun::ChooseScales(
       // neighbourhood that no model at all explains.
       this->Fits.Edit(r) = fit;
       this->Scale[r] = fit.Points;
+      this->Reach2[r] = lastReach2;
       if (std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), fit.Cross.RSS2) >
         MisfitBound(fit.Points - 6) * this->Variance)
       {
@@ -1872,13 +1906,15 @@ void CreaseRun::ShareModels()
   {
     double Gain;
     CreaseLine Hinge;
+    float Reach2;
     bool Explained;
   };
   auto read = [&](vtkIdType id, unsigned char* record) {
     const vtkIdType r = this->RowOf[id];
     if (r >= 0)
     {
-      const Model model{ this->Gain[r], this->Fits[r].Hinge, this->Fits[r].Explained };
+      const Model model{ this->Gain[r], this->Fits[r].Hinge, this->Reach2[r],
+        this->Fits[r].Explained };
       std::memcpy(record, &model, sizeof(Model));
     }
   };
@@ -1898,6 +1934,7 @@ void CreaseRun::ShareModels()
     this->Gain[r] = model.Gain;
     this->Fits.Edit(r).Hinge = model.Hinge;
     this->Fits.Edit(r).Explained = model.Explained;
+    this->Reach2[r] = model.Reach2;
   };
   this->RecordsFromOwners(static_cast<int>(sizeof(Model)), read, write);
 }
@@ -1913,6 +1950,36 @@ double CreaseRun::LineDistance(vtkIdType r, const double v[3]) const
   const double along =
     w[0] * f.LineDirection[0] + w[1] * f.LineDirection[1] + w[2] * f.LineDirection[2];
   return std::sqrt(std::max(w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - along * along, 0.0));
+}
+
+double CreaseRun::HingeAcross(vtkIdType r, const double v[3]) const
+{
+  const CreaseLine& f = this->Fits[r].Hinge;
+  double w[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    w[c] = v[c] - f.LinePoint[c];
+  }
+  const double along =
+    w[0] * f.LineDirection[0] + w[1] * f.LineDirection[1] + w[2] * f.LineDirection[2];
+  for (int c = 0; c < 3; ++c)
+  {
+    w[c] -= along * f.LineDirection[c];
+  }
+  const double length2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+  double best = length2, across = 0.0;
+  for (int k = 0; k < 2; ++k)
+  {
+    const float* u = f.Rays[k];
+    const double on = w[0] * u[0] + w[1] * u[1] + w[2] * u[2];
+    const double off2 = on > 0.0 ? std::max(length2 - on * on, 0.0) : length2;
+    if (off2 < best || (k == 0 && off2 <= best))
+    {
+      best = off2;
+      across = std::max(on, 0.0);
+    }
+  }
+  return across;
 }
 
 void CreaseRun::MarkVoters(double minAngle, vtkIdType begin, vtkIdType end)
@@ -1955,7 +2022,7 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
       const uint64_t* sheet = this->Sheet(r);
       std::vector<double>& distances = scratch.Local();
       distances.clear();
-      int members = 0, in = 0;
+      int members = 0, in = 0, blind = 0;
       for (int j = -1; j < count && members <= this->Scale[r]; ++j)
       {
         if (!Reached(sheet, j + 1))
@@ -1964,20 +2031,26 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
         }
         ++members;
         const vtkIdType other = j < 0 ? id : static_cast<vtkIdType>(row[j]);
+        this->Reader.Get(other, y);
+        const double v[3] = { x[0] - y[0], x[1] - y[1], x[2] - y[2] };
+        // A member whose fit (of a smaller scale) does not reach the point has no say on it.
+        if (j >= 0 && v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > this->Reach2[this->RowOf[other]])
+        {
+          ++blind;
+          continue;
+        }
         if (!voter[other])
         {
           continue;
         }
-        this->Reader.Get(other, y);
-        const double v[3] = { x[0] - y[0], x[1] - y[1], x[2] - y[2] };
         const double distance = this->LineDistance(this->RowOf[other], v);
         if (distance <= std::max(band, bandWidth * this->Across[id]))
         {
           ++in;
-          distances.push_back(distance);
+          distances.push_back(this->HingeAcross(this->RowOf[other], v));
         }
       }
-      vote[id] = static_cast<float>(in) / static_cast<float>(members);
+      vote[id] = static_cast<float>(in) / static_cast<float>(members - blind);
       if (!distances.empty())
       {
         const auto middle = distances.begin() + distances.size() / 2;
@@ -2505,10 +2578,11 @@ vtkIdType CreaseRun::Thin(const unsigned char* type, const float* outward, const
       if (type[id] != vtkCreaseVotingFeatures::BORDER)
       {
         // Creases and corners: enough voters for a consensus line, and within half the local
-        // spacing of it, widened by the noise.
+        // spacing of it across the face (noise along the face's normal does not move a point
+        // across it).
         const double half = 0.5 * this->LocalSpacing(r, ks);
         keep[id] = this->Offset[id] >= 0.0f && !(vote[id] < trusted) &&
-            this->Offset[id] <= std::sqrt(half * half + this->Variance)
+            this->Offset[id] <= half
           ? 1
           : 0;
         continue;

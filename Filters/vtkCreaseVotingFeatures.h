@@ -70,7 +70,9 @@
  *    fit better than one (gain above 1), meet at MinimumAngle or more, and its crease line
  *    passes within BandWidth d of P_i (on a cloud sampled in scan lines, within BandWidth times
  *    half the gap to the next row, where that is larger: a crease between two rows). The score
- *    `CreaseVotes` is the fraction of the N points that vote.
+ *    `CreaseVotes` is the fraction of the N points that vote, counting only the points whose
+ *    fit reaches P_i: a member fitted at a smaller scale (step 2c) whose fitted points all lie
+ *    nearer to it than P_i does says nothing about P_i, and neither votes nor counts.
  * 5. A point is a feature point when a majority of its neighbourhood votes for it: score > 0.5
  *    (ThresholdMode ABSOLUTE, Threshold 0.5 by default).
  * 6. Hysteresis along the features: a point with more than GrowThreshold (0.3) of the votes
@@ -107,8 +109,10 @@
  *    the radius of its smallest scale: the directions spread wherever the reach holds two
  *    curves, as far along each curve as the reach; the corner is where they meet.
  * 9. ThinFeatures: the crease and corner points whose consensus distance to the crease, the
- *    median distance to the lines that vote for them (no single noisy fit places the line as
- *    well), is within half their local spacing, widened by the noise: sqrt((s/2)^2 + sigma^2),
+ *    median over the lines that vote for them (no single noisy fit places the line as well) of
+ *    the distance from the line along the nearer of its two half-planes (0 beyond the line;
+ *    noise along a face's normal does not move a point across the face, where the straight
+ *    distance to the line grows with it), is within half their local spacing s / 2,
  *    s = sqrt(pi r^2 / k) the spacing of a uniform sampling as dense as their NormalNeighbors
  *    nearest (r: the distance to the furthest of them), and whose vote reaches the level the
  *    hysteresis trusts (the median is a consensus only where enough lines vote; fewer mark the
@@ -189,7 +193,7 @@ public:
   /**
    * One point wide. Default off (the mask is a band about 2 BandWidth d wide). On: only the
    * crease and corner points within half a local spacing of the crease (by the median distance
-   * to the lines that vote for them, the band widened by the noise) are kept, and across each
+   * across the face from the lines that vote for them) are kept, and across each
    * border the outermost: the row of points nearest the edge, as labels that mark edges as
    * lines do (step 9 above).
    */
