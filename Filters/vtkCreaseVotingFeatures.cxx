@@ -1151,9 +1151,9 @@ struct CreaseRun
   void ClassifyFeatures(const unsigned char* mask, const unsigned char* border,
     const float* outward, double minAngle, int kb, unsigned char* type) const;
   // One point wide: keeps the crease and corner points whose consensus distance to the crease
-  // (Offset, across the face) is within half their local spacing (of the ks nearest), and
-  // whose vote reaches `trusted` (enough voters for the distance to be a consensus), and across
-  // each border the outermost points (among their kt nearest).
+  // (Offset, across the face) is within half their local spacing (of the ks nearest), widened by
+  // the noise, and whose vote reaches `trusted` (enough voters for the distance to be a
+  // consensus), and across each border the outermost points (among their kt nearest).
   vtkIdType Thin(const unsigned char* type, const float* outward, const float* vote,
     double trusted, int kt, int ks, unsigned char* mask) const;
 
@@ -2579,10 +2579,11 @@ vtkIdType CreaseRun::Thin(const unsigned char* type, const float* outward, const
       {
         // Creases and corners: enough voters for a consensus line, and within half the local
         // spacing of it across the face (noise along the face's normal does not move a point
-        // across it).
+        // across it), widened by the noise (a point at the crease pushed into the solid lies on
+        // a face, as far from the line as the noise moved it).
         const double half = 0.5 * this->LocalSpacing(r, ks);
         keep[id] = this->Offset[id] >= 0.0f && !(vote[id] < trusted) &&
-            this->Offset[id] <= half
+            this->Offset[id] <= std::sqrt(half * half + this->Variance)
           ? 1
           : 0;
         continue;

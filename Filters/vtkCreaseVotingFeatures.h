@@ -112,8 +112,9 @@
  *    median over the lines that vote for them (no single noisy fit places the line as well) of
  *    the distance from the line along the nearer of its two half-planes (0 beyond the line;
  *    noise along a face's normal does not move a point across the face, where the straight
- *    distance to the line grows with it), is within half their local spacing s / 2,
- *    s = sqrt(pi r^2 / k) the spacing of a uniform sampling as dense as their NormalNeighbors
+ *    distance to the line grows with it), is within half their local spacing, widened by the
+ *    noise (a point at the crease pushed into the solid lies on a face, as far from the line as
+ *    the noise moved it): sqrt((s/2)^2 + sigma^2), s = sqrt(pi r^2 / k) the spacing of a uniform sampling as dense as their NormalNeighbors
  *    nearest (r: the distance to the furthest of them), and whose vote reaches the level the
  *    hysteresis trusts (the median is a consensus only where enough lines vote; fewer mark the
  *    points the detail rule added, rough patches of unevenly noisy clouds). Across each border
@@ -192,8 +193,8 @@ public:
   ///@{
   /**
    * One point wide. Default off (the mask is a band about 2 BandWidth d wide). On: only the
-   * crease and corner points within half a local spacing of the crease (by the median distance
-   * across the face from the lines that vote for them) are kept, and across each
+   * crease and corner points within half a local spacing of the crease, widened by the noise (by
+   * the median distance across the face from the lines that vote for them) are kept, and across each
    * border the outermost: the row of points nearest the edge, as labels that mark edges as
    * lines do (step 9 above).
    */
