@@ -307,6 +307,9 @@ double FitQuadric(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
   return FitHeights<6>(p, c, n, planeRss, bend, across);
 }
 
+// The scale of a stored ray's components (CreaseLine::Rays).
+constexpr double RayUnit = 32767.0;
+
 // One two-plane model of a neighbourhood: its residual and the line where its planes meet.
 struct CreaseLine
 {
@@ -316,8 +319,9 @@ struct CreaseLine
   float LinePoint[3] = { 0.0f, 0.0f, 0.0f }; // relative to the point
   float LineDirection[3] = { 0.0f, 0.0f, 0.0f };
   // Unit directions from the line into each half-plane, across the line (towards the centroid
-  // of each half's points): with the line, the hinge's cross-section.
-  float Rays[2][3] = { { 0.0f, 0.0f, 0.0f }, { 0.0f, 0.0f, 0.0f } };
+  // of each half's points): with the line, the hinge's cross-section. Components in units of
+  // 1/RayUnit (a fit is stored for every point near a feature: 12 bytes, not 24).
+  int16_t Rays[2][3] = { { 0, 0, 0 }, { 0, 0, 0 } };
   // The planes' centroids lie on the inner side of the line (against the fitted point's normal):
   // a convex crease. False for a concave one.
   bool Convex = true;
@@ -380,7 +384,8 @@ void StoreLine(CreaseLine& line, double rss2, double sine, bool hasLine, const E
     const double length = ray.norm();
     for (int c = 0; c < 3; ++c)
     {
-      line.Rays[k][c] = hasLine && length > 0.0 ? static_cast<float>(ray[c] / length) : 0.0f;
+      line.Rays[k][c] =
+        hasLine && length > 0.0 ? static_cast<int16_t>(std::lround(RayUnit * ray[c] / length)) : 0;
     }
   }
 }
@@ -1970,8 +1975,8 @@ double CreaseRun::HingeAcross(vtkIdType r, const double v[3]) const
   double best = length2, across = 0.0;
   for (int k = 0; k < 2; ++k)
   {
-    const float* u = f.Rays[k];
-    const double on = w[0] * u[0] + w[1] * u[1] + w[2] * u[2];
+    const int16_t* u = f.Rays[k];
+    const double on = (w[0] * u[0] + w[1] * u[1] + w[2] * u[2]) / RayUnit;
     const double off2 = on > 0.0 ? std::max(length2 - on * on, 0.0) : length2;
     if (off2 < best || (k == 0 && off2 <= best))
     {
