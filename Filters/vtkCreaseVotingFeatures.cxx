@@ -1161,6 +1161,15 @@ struct CreaseRun
   // consensus), and across each border the outermost points (among their kt nearest).
   vtkIdType Thin(const unsigned char* type, const float* outward, const float* vote,
     double trusted, int kt, int ks, unsigned char* mask) const;
+  // The thin mask's gaps: a crease or corner point of the band with no kept point among its kt
+  // nearest is kept where its consensus distance is the least of the candidates (band points
+  // whose vote reaches `trusted`) among them. Two creases closer than a fit can tell apart put
+  // the consensus line between their rows, and noise pushes stretches of a row past the limit:
+  // both left the curve without a point there.
+  // band: the mask before Thin(); mask: after it, on return with the gaps' points added (their
+  // number). In a distributed run the halo's mask and Offset must be their owners'.
+  vtkIdType FillThinGaps(const unsigned char* type, const float* vote, double trusted, int kt,
+    const unsigned char* band, unsigned char* mask) const;
 
 private:
   // The members of row r's sheet (row: its neighbours), nearest first, at most `count` of them besides the point,
@@ -2623,6 +2632,47 @@ vtkIdType CreaseRun::Thin(const unsigned char* type, const float* outward, const
   return count;
 }
 
+vtkIdType CreaseRun::FillThinGaps(const unsigned char* type, const float* vote, double trusted,
+  int kt, const unsigned char* band, unsigned char* mask) const
+{
+  std::vector<unsigned char> fill(static_cast<size_t>(this->N), 0);
+  auto candidate = [&](vtkIdType id) {
+    return band[id] && type[id] != vtkCreaseVotingFeatures::BORDER && this->Offset[id] >= 0.0f &&
+      !(vote[id] < trusted);
+  };
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<int32_t> buffer(static_cast<size_t>(this->K));
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      if (mask[id] || !candidate(id))
+      {
+        continue;
+      }
+      const int32_t* row = this->Row(r, buffer.data(), kt);
+      const int count = featurepoints::RowLength(row, std::min(kt, this->K));
+      bool least = true;
+      for (int j = 0; j < count && least; ++j)
+      {
+        const vtkIdType other = row[j];
+        least = !mask[other] &&
+          !(candidate(other) &&
+            (this->Offset[other] < this->Offset[id] ||
+              (this->Offset[other] == this->Offset[id] && other < id)));
+      }
+      fill[id] = least ? 1 : 0;
+    }
+  });
+  vtkIdType added = 0;
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    const vtkIdType id = this->Ids[r];
+    mask[id] |= fill[id];
+    added += fill[id];
+  }
+  return added;
+}
+
 double CreaseRun::LocalSpacing(vtkIdType r, int ks) const
 {
   std::vector<int32_t> buffer(static_cast<size_t>(this->K));
@@ -2891,8 +2941,15 @@ int vtkCreaseVotingFeatures::RequestData(
     // The votes the hysteresis trusts (or the threshold, where that is lower): a point with fewer
     // (one the detail rule marked) has too few voting lines for their median to locate the crease.
     const double trusted = std::min(this->GrowThresholdUsed, this->ThresholdUsed);
+    const std::vector<unsigned char> band(m, m + n);
     this->NumberOfFeaturePoints = run.Thin(type, outward.data(), vote, trusted,
       ConnectionNeighbors, this->NormalNeighbors, m);
+    // The gaps read their neighbours' kept flags and consensus distances: the owners'.
+    this->ShareHaloValues(m, 1, HALO_FROM_OWNER);
+    this->ShareHaloValues(run.Offset.data(), 1, HALO_FROM_OWNER);
+    this->NumberOfFeaturePoints +=
+      run.FillThinGaps(type, vote, trusted, ConnectionNeighbors, band.data(), m);
+    this->ShareHaloValues(m, 1, HALO_FROM_OWNER);
     for (vtkIdType id : ids)
     {
       type[id] = m[id] ? type[id] : 0;

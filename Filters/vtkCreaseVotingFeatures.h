@@ -114,11 +114,14 @@
  *    noise along a face's normal does not move a point across the face, where the straight
  *    distance to the line grows with it), is within half their local spacing, widened by the
  *    noise (a point at the crease pushed into the solid lies on a face, as far from the line as
- *    the noise moved it): sqrt((s/2)^2 + sigma^2), s = sqrt(pi r^2 / k) the spacing of a uniform sampling as dense as their NormalNeighbors
- *    nearest (r: the distance to the furthest of them), and whose vote reaches the level the
- *    hysteresis trusts (the median is a consensus only where enough lines vote; fewer mark the
- *    points the detail rule added, rough patches of unevenly noisy clouds). Across each border
- *    the outermost.
+ *    the noise moved it): sqrt((s/2)^2 + sigma^2), s = sqrt(pi r^2 / k) the spacing of a
+ *    uniform sampling as dense as their NormalNeighbors nearest (r: the distance to the furthest
+ *    of them), and whose vote reaches the level the hysteresis trusts (the median is a consensus
+ *    only where enough lines vote; fewer mark the points the detail rule added, rough patches of
+ *    unevenly noisy clouds). Then the gaps: such a point with no kept point among its 8 nearest
+ *    is kept where its consensus distance is the least of theirs (two creases closer than a fit
+ *    tells apart put the consensus line between their rows; noise pushes stretches of a row past
+ *    the limit). Across each border the outermost.
  *
  * Output arrays: `CreaseVotes` (float, the score, 0-1), `CreaseGain` (float, G_i), `CreaseAngle`
  * (float, the angle between the two fitted planes in degrees, 0 when no line was found),
