@@ -1953,16 +1953,20 @@ void CreaseRun::ShareModels()
   this->RecordsFromOwners(static_cast<int>(sizeof(Model)), read, write);
 }
 
-double CreaseRun::LineDistance(vtkIdType r, const double v[3]) const
+// The offset w = v - the line's point, and its component along the line.
+double FromLine(const CreaseLine& f, const double v[3], double w[3])
 {
-  const CreaseLine& f = this->Fits[r].Hinge;
-  double w[3];
   for (int c = 0; c < 3; ++c)
   {
     w[c] = v[c] - f.LinePoint[c];
   }
-  const double along =
-    w[0] * f.LineDirection[0] + w[1] * f.LineDirection[1] + w[2] * f.LineDirection[2];
+  return w[0] * f.LineDirection[0] + w[1] * f.LineDirection[1] + w[2] * f.LineDirection[2];
+}
+
+double CreaseRun::LineDistance(vtkIdType r, const double v[3]) const
+{
+  double w[3];
+  const double along = FromLine(this->Fits[r].Hinge, v, w);
   return std::sqrt(std::max(w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - along * along, 0.0));
 }
 
@@ -1970,12 +1974,7 @@ double CreaseRun::HingeAcross(vtkIdType r, const double v[3]) const
 {
   const CreaseLine& f = this->Fits[r].Hinge;
   double w[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    w[c] = v[c] - f.LinePoint[c];
-  }
-  const double along =
-    w[0] * f.LineDirection[0] + w[1] * f.LineDirection[1] + w[2] * f.LineDirection[2];
+  const double along = FromLine(f, v, w);
   for (int c = 0; c < 3; ++c)
   {
     w[c] -= along * f.LineDirection[c];
