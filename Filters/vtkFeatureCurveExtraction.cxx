@@ -884,12 +884,13 @@ void CurveRun::RemoveFlatPieces()
   for (const Chain& chain : this->ExtractChains())
   {
     const int first = chain.Ids.front(), last = chain.Ids.back();
-    if (chain.Closed || this->G.Degree(first) != 1 || this->G.Degree(last) != 1 ||
-      this->G.Node[first] || this->G.Node[last])
+    auto freeEnd = [&](int v) { return this->G.Degree(v) == 1 && !this->G.Node[v]; };
+    if (chain.Closed || (!freeEnd(first) && !freeEnd(last)))
     {
       continue;
     }
-    // A straight piece on its own (every vertex within one spacing of its chord), on a crease.
+    // A straight piece on its own or a straight branch from a junction (every vertex within one
+    // spacing of its chord), on a crease.
     const V3 a = this->G.Vertices[first];
     const V3 chord = this->G.Vertices[last] - a;
     const double length = chord.norm();

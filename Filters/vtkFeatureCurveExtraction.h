@@ -52,8 +52,9 @@
  *    at the gap's line all along it: at every FitRadius s, the points within 2 FitRadius s lie on
  *    one side of the line in their tangent plane (the same side throughout), none beyond it by
  *    more than FitRadius s. Where the sampling recedes from an edge the detector finds no border
- *    point; the cloud still ends there. Conversely, a straight piece on its own (both ends free,
- *    every vertex within 1 s of its chord, not on a border) is removed where the cloud does not
+ *    point; the cloud still ends there. Conversely, a straight piece on its own or a straight branch
+ *    (one end free or both, every vertex within 1 s of its chord, not on a border) is removed
+ *    where the cloud does not
  *    bend across it: the two faces hinged on it differ by less than a crease's angle or 3
  *    standard errors, or one quadratic face explains the cross-section as well (the two faces
  *    leave no more than 2 noise variances less, Akaike's criterion): stray feature points on a

@@ -225,9 +225,11 @@ double CurveIdAgreement(vtkPolyData* points, vtkPolyData* lines, double s, vtkId
   return labelled ? static_cast<double>(agree) / labelled : 0.0;
 }
 
-// A flat jittered grid (spacing 1) whose feature points are a band along x (|y| <= 1, score 1)
-// and a branch across it (|x| <= 1, 1 < y <= 7.5) with the given score; the detector's threshold
-// 0.5 in the field data, the score as the active scalars, as a detector gives them.
+// A jittered grid (spacing 1) whose feature points are a band along x (|y| <= 1, score 1) and a
+// branch across it (|x| <= 1, 1 < y <= 6.5: shorter than 2 FitRadius) with the given score; the
+// detector's threshold 0.5 in the field data, the score as the active scalars, as a detector
+// gives them. The grid is flat up to the band and folds along the branch beyond it (a 20-degree
+// slope each side, reached at y = 3): the cloud bends across both, as a detector's features do.
 vtkSmartPointer<vtkPolyData> TeeJunction(double branchScore)
 {
   std::mt19937 random(7);
@@ -243,8 +245,9 @@ vtkSmartPointer<vtkPolyData> TeeJunction(double branchScore)
     {
       const double x = i + jitter(random), y = j + jitter(random);
       const bool band = std::abs(y) <= 1.0 && std::abs(x) <= 30.0;
-      const bool branch = std::abs(x) <= 1.0 && y > 1.0 && y <= 7.5;
-      points->InsertNextPoint(x, y, 0.0);
+      const bool branch = std::abs(x) <= 1.0 && y > 1.0 && y <= 6.5;
+      const double fold = std::min(1.0, std::max(0.0, 0.5 * (y - 1.0)));
+      points->InsertNextPoint(x, y, std::tan(vtkMath::RadiansFromDegrees(20.0)) * std::abs(x) * fold);
       mask->InsertNextValue(band || branch ? 1 : 0);
       score->InsertNextValue(band ? 1.0f : branch ? static_cast<float>(branchScore) : 0.0f);
     }
