@@ -995,10 +995,16 @@ struct CreaseRun
   std::vector<float> Reach2;
   std::vector<double> Gain;
   double Variance = 0.0;
+  // Whether the run makes the one-point-wide mask (ThinFeatures): only then are Offset and
+  // Spread kept.
+  bool Thinning = false;
   // Per point: the median distance across the crease from the lines that vote for it (along the
   // nearer half-plane of each: the consensus distance to the crease, which no single noisy fit
-  // gives), -1 where none does. Set by CastVotes().
+  // gives), -1 where none does; and the standard error of that median (1.2533 x 1.4826 x the
+  // median absolute deviation of the distances over the square root of their number). Set by
+  // CastVotes() when Thinning.
   std::vector<float> Offset;
+  std::vector<float> Spread;
   // Distributed runs (see RequestData): by point id, 1 for the piece's own points (null: all);
   // the upper median of per-row values over the own rows of every process; labels made to agree
   // across the pieces (the smallest of each point's copies), true while any changes; how many
@@ -1163,11 +1169,13 @@ struct CreaseRun
     double trusted, int kt, int ks, unsigned char* mask) const;
   // The thin mask's gaps: a crease or corner point of the band with no kept point among its kt
   // nearest is kept where its consensus distance is the least of the candidates (band points
-  // whose vote reaches `trusted`) among them. Two creases closer than a fit can tell apart put
-  // the consensus line between their rows, and noise pushes stretches of a row past the limit:
-  // both left the curve without a point there.
+  // whose vote reaches `trusted`) among them, within its standard error (Spread): two rows the
+  // same distance from the line, as far as the voters tell, are both kept. Two creases closer
+  // than a fit can tell apart (a narrow chamfer's two edges) put the consensus line between
+  // their rows, and noise pushes stretches of a row past the limit: both left the curve without
+  // a point there.
   // band: the mask before Thin(); mask: after it, on return with the gaps' points added (their
-  // number). In a distributed run the halo's mask and Offset must be their owners'.
+  // number). In a distributed run the halo's mask, Offset and Spread must be their owners'.
   vtkIdType FillThinGaps(const unsigned char* type, const float* vote, double trusted, int kt,
     const unsigned char* band, unsigned char* mask) const;
 
@@ -1381,7 +1389,8 @@ void CreaseRun::PrepareFits(vtkPointCloudNeighborhoods* neighborhoods)
   this->Scale.assign(static_cast<size_t>(this->Rows), this->KFit);
   this->Reach2.assign(static_cast<size_t>(this->Rows), std::numeric_limits<float>::infinity());
   this->Gain.assign(static_cast<size_t>(this->Rows), 0.0);
-  this->Offset.assign(static_cast<size_t>(this->N), -1.0f);
+  this->Offset.assign(this->Thinning ? static_cast<size_t>(this->N) : 0, -1.0f);
+  this->Spread.assign(this->Thinning ? static_cast<size_t>(this->N) : 0, 0.0f);
   // By point id: its SheetLinks nearest (the start of its row), -1 where none. The one-sheet
   // links read these for every neighbour of every point: a table of their own keeps them
   // together in memory instead of one cache line per row of the wide table.
@@ -2060,7 +2069,10 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
         if (distance <= std::max(band, bandWidth * this->Across[id]))
         {
           ++in;
-          distances.push_back(this->HingeAcross(this->RowOf[other], v));
+          if (this->Thinning)
+          {
+            distances.push_back(this->HingeAcross(this->RowOf[other], v));
+          }
         }
       }
       vote[id] = static_cast<float>(in) / static_cast<float>(members - blind);
@@ -2068,7 +2080,15 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
       {
         const auto middle = distances.begin() + distances.size() / 2;
         std::nth_element(distances.begin(), middle, distances.end());
-        this->Offset[id] = static_cast<float>(*middle);
+        const double median = *middle;
+        this->Offset[id] = static_cast<float>(median);
+        for (double& d : distances)
+        {
+          d = std::abs(d - median);
+        }
+        std::nth_element(distances.begin(), middle, distances.end());
+        this->Spread[id] = static_cast<float>(
+          1.2533 * 1.4826 * *middle / std::sqrt(static_cast<double>(distances.size())));
       }
     }
   });
@@ -2650,16 +2670,18 @@ vtkIdType CreaseRun::FillThinGaps(const unsigned char* type, const float* vote, 
       }
       const int32_t* row = this->Row(r, buffer.data(), kt);
       const int count = featurepoints::RowLength(row, std::min(kt, this->K));
-      bool least = true;
-      for (int j = 0; j < count && least; ++j)
+      bool gap = true;
+      double least = this->Offset[id];
+      for (int j = 0; j < count && gap; ++j)
       {
         const vtkIdType other = row[j];
-        least = !mask[other] &&
-          !(candidate(other) &&
-            (this->Offset[other] < this->Offset[id] ||
-              (this->Offset[other] == this->Offset[id] && other < id)));
+        gap = !mask[other];
+        if (candidate(other))
+        {
+          least = std::min<double>(least, this->Offset[other]);
+        }
       }
-      fill[id] = least ? 1 : 0;
+      fill[id] = gap && this->Offset[id] <= least + this->Spread[id] ? 1 : 0;
     }
   });
   vtkIdType added = 0;
@@ -2744,6 +2766,7 @@ int vtkCreaseVotingFeatures::RequestData(
   }
   const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
   CreaseRun run(reader, ids, table, k, kNear, this->NumberOfNeighbors, this->MeanSpacing, n);
+  run.Thinning = this->ThinFeatures;
   const bool distributed = this->IsDistributed() && !this->Owned.empty();
   if (distributed)
   {
@@ -2946,6 +2969,7 @@ int vtkCreaseVotingFeatures::RequestData(
     // The gaps read their neighbours' kept flags and consensus distances: the owners'.
     this->ShareHaloValues(m, 1, HALO_FROM_OWNER);
     this->ShareHaloValues(run.Offset.data(), 1, HALO_FROM_OWNER);
+    this->ShareHaloValues(run.Spread.data(), 1, HALO_FROM_OWNER);
     this->NumberOfFeaturePoints +=
       run.FillThinGaps(type, vote, trusted, ConnectionNeighbors, band.data(), m);
     this->ShareHaloValues(m, 1, HALO_FROM_OWNER);

@@ -119,9 +119,10 @@
  *    of them), and whose vote reaches the level the hysteresis trusts (the median is a consensus
  *    only where enough lines vote; fewer mark the points the detail rule added, rough patches of
  *    unevenly noisy clouds). Then the gaps: such a point with no kept point among its 8 nearest
- *    is kept where its consensus distance is the least of theirs (two creases closer than a fit
- *    tells apart put the consensus line between their rows; noise pushes stretches of a row past
- *    the limit). Across each border the outermost.
+ *    is kept where its consensus distance is the least of theirs, within the standard error of
+ *    its median (two creases closer than a fit tells apart put the consensus line between their
+ *    rows, both as near as the voters can tell; noise pushes stretches of a row past the limit).
+ *    Across each border the outermost.
  *
  * Output arrays: `CreaseVotes` (float, the score, 0-1), `CreaseGain` (float, G_i), `CreaseAngle`
  * (float, the angle between the two fitted planes in degrees, 0 when no line was found),
