@@ -178,16 +178,17 @@ struct GridQuery
     {
       largest = std::max(largest, c.D2);
     }
-    if (!std::isfinite(largest))
+    const int32_t buckets = static_cast<int32_t>(m);
+    // Monotone in D2: a larger distance never lands in an earlier bucket.
+    const double scale = largest > 0.0 ? (buckets - 0.5) / largest : 0.0;
+    if (!std::isfinite(largest) || !std::isfinite(scale))
     {
-      // Squared distances that overflow (coordinates beyond 1e154) have no bucket: plain sort.
+      // Squared distances that overflow (coordinates beyond 1e154), or so small that the scale
+      // does (subnormal, 0 x inf would be NaN), have no bucket: plain sort.
       std::sort(candidates.begin(), candidates.end());
       candidates.resize(std::min(m, keep));
       return;
     }
-    const int32_t buckets = static_cast<int32_t>(m);
-    // Monotone in D2: a larger distance never lands in an earlier bucket.
-    const double scale = largest > 0.0 ? (buckets - 0.5) / largest : 0.0;
     auto bucketOf = [scale, buckets](double d2) {
       return std::min(buckets - 1, static_cast<int32_t>(d2 * scale));
     };

@@ -21,6 +21,7 @@
 #include <random>
 #include <string>
 #include <utility>
+#include <numeric>
 #include <vector>
 
 namespace
@@ -377,6 +378,33 @@ void Degenerate()
     Check(grid->FindClosestPoint(x) == -1 && result->GetNumberOfIds() == 0 &&
         grid->GetNumberOfGridPoints() == 0,
       "non-finite data set");
+  }
+  // Distances near the smallest normal double (a cloud spanning 1e-300 to 1e300, scaled
+  // down): the buckets' scale (candidates over the largest squared distance) overflows; the k
+  // nearest (more than the heap's 8) are still the nearest, in distance order.
+  {
+    vtkNew<vtkPolyData> tiny;
+    vtkNew<vtkPoints> close;
+    close->SetDataTypeToDouble();
+    close->InsertNextPoint(0.0, 0.0, 0.0);
+    const double r0 = 2.3e-154; // r0^2 = 5.3e-308, (1.5 r0)^2 = 1.2e-307
+    for (int i = 1; i <= 30; ++i)
+    {
+      const double r = r0 * (1.0 + i / 60.0), a = 0.7 * i;
+      close->InsertNextPoint(r * std::cos(a), r * std::sin(a), 0.0);
+    }
+    close->InsertNextPoint(1.0, 0.0, 0.0);
+    tiny->SetPoints(close);
+    vtkNew<vtkPointCloudGridLocator> grid;
+    grid->SetDataSet(tiny);
+    grid->BuildLocator();
+    grid->FindNearestNeighbors(20, std::vector<vtkIdType>{ 0 }, table, &nearest);
+    bool ordered = table.size() == 20;
+    for (int j = 0; j < 20 && ordered; ++j)
+    {
+      ordered = table[j] == j + 1;
+    }
+    Check(ordered, "squared distances near the smallest double");
   }
 }
 
