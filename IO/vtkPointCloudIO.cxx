@@ -1321,11 +1321,33 @@ void vtkPointCloudIO::ReleaseTemporaryFile(const std::string& temporary)
   }
 }
 
+namespace
+{
+// Whether `target` (a write target: links resolved) is something other than a regular file that
+// exists (a device, a pipe, a socket): the writers write a temporary file and rename it over the
+// target, which would replace such a thing with a file.
+bool NotRegularFile(const std::string& fileName, const std::string& target, std::string& error)
+{
+  struct stat info;
+  if (::stat(target.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode))
+  {
+    error = fileName + ": is not a regular file (a device, a pipe or a socket): outputs are "
+                       "written to files only";
+    return true;
+  }
+  return false;
+}
+} // namespace
+
 bool vtkPointCloudIO::CanCreate(const std::string& fileName, std::string& error)
 {
   if (vtksys::SystemTools::FileIsDirectory(fileName))
   {
     error = fileName + ": is a folder, not a file";
+    return false;
+  }
+  if (NotRegularFile(fileName, WriteTarget(fileName), error))
+  {
     return false;
   }
   const std::string temporary = CreateTemporaryFile(WriteTarget(fileName), error);
@@ -1356,6 +1378,10 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
   }
   // Known to the signal handlers from before it exists (see RemoveTemporaryFileInProgress).
   const std::string target = WriteTarget(fileName);
+  if (NotRegularFile(fileName, target, error))
+  {
+    return false;
+  }
   const std::string temporary = CreateTemporaryFile(target, error, true);
   if (temporary.empty())
   {
@@ -1449,10 +1475,19 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
           vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode())
                       : message);
   }
-  else if (std::rename(temporary.c_str(), target.c_str()) != 0)
+  else
   {
-    error = fileName + ": cannot replace the file: " + std::strerror(errno);
-    ok = false;
+    // A file replaced keeps its permissions (a new one gets those of any new file).
+    struct stat info;
+    if (::stat(target.c_str(), &info) == 0 && S_ISREG(info.st_mode))
+    {
+      ::chmod(temporary.c_str(), info.st_mode & 07777);
+    }
+    if (std::rename(temporary.c_str(), target.c_str()) != 0)
+    {
+      error = fileName + ": cannot replace the file: " + std::strerror(errno);
+      ok = false;
+    }
   }
   if (!ok)
   {

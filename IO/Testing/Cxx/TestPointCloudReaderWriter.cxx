@@ -18,6 +18,8 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -224,6 +226,31 @@ int TestPointCloudReaderWriter(int argc, char* argv[])
     Check(c.File.empty() || (writer->GetErrorMessage().compare(0, c.File.size(), c.File) == 0 &&
                               !Exists(c.File)),
       what + ": message '" + writer->GetErrorMessage() + "' or a file left");
+  }
+
+  // A pipe as the output is refused and left a pipe (the temporary file renamed over it would
+  // replace it); a file replaced keeps its permissions.
+  {
+    const std::string pipe = folder + "/pipe.vtp";
+    std::remove(pipe.c_str());
+    struct stat info;
+    if (::mkfifo(pipe.c_str(), 0644) == 0)
+    {
+      writer->SetFileName(pipe.c_str());
+      Check(writer->Write() == 0 && writer->GetErrorCode() == vtkErrorCode::CannotOpenFileError &&
+          writer->GetErrorMessage().find("not a regular file") != std::string::npos,
+        "writing a pipe: '" + writer->GetErrorMessage() + "'");
+      Check(::stat(pipe.c_str(), &info) == 0 && S_ISFIFO(info.st_mode), "the pipe was replaced");
+      std::remove(pipe.c_str());
+    }
+    const std::string own = folder + "/private.vtp";
+    std::ofstream(own) << "x";
+    ::chmod(own.c_str(), 0600);
+    writer->SetFileName(own.c_str());
+    Check(writer->Write() == 1 && ::stat(own.c_str(), &info) == 0 &&
+        (info.st_mode & 07777) == 0600 && info.st_size > 1,
+      "a file replaced keeps its permissions (0600)");
+    std::remove(own.c_str());
   }
 
   std::printf("%s\n", Failures ? "vtkPointCloudReader/Writer: FAILED" : "vtkPointCloudReader/Writer: ok");
