@@ -1,12 +1,15 @@
 #include "vtkPointCloudIO.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDataSetReader.h"
 #include "vtkDataSetWriter.h"
 #include "vtkErrorCode.h"
 #include "vtkExecutive.h"
 #include "vtkFeaturePointsVertexCells.h"
+#include "vtkFieldData.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPointCloudLASReader.h"
@@ -297,6 +300,42 @@ vtkSmartPointer<vtkPolyData> AsPolyData(vtkPointSet* data)
   poly->SetVerts(vtkPointCloudIO::MakeVertexCells(data->GetNumberOfPoints()));
   return poly;
 }
+
+// An array name as an XML attribute value: VTK 9.1's XML writers write names as they are, so
+// that a quote, '<' or '&' in a name (from a CSV header, say) makes the file unreadable, and an
+// empty name is refused when read back. Entities are decoded by the reader: the name comes back
+// as it was; an empty one comes back as "unnamed" (as the PLY and PCD writers name it).
+std::string XMLName(const char* name)
+{
+  if (!name || !*name)
+  {
+    return "unnamed";
+  }
+  std::string out;
+  for (const char* c = name; *c; ++c)
+  {
+    switch (*c)
+    {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default:
+        // Control characters other than tab, newline and carriage return have no place in XML.
+        if (static_cast<unsigned char>(*c) < 0x20 && *c != '\t' && *c != '\n' && *c != '\r')
+        {
+          out += '_';
+        }
+        else
+        {
+          out += *c;
+        }
+    }
+  }
+  return out;
+}
+
 
 // The temporary files that a signal handler removes (RemoveTemporaryFileInProgress): one slot
 // per file being written, so that writers in several threads each keep theirs. A slot is
@@ -1321,6 +1360,69 @@ void vtkPointCloudIO::ReleaseTemporaryFile(const std::string& temporary)
   }
 }
 
+vtkSmartPointer<vtkPolyData> vtkPointCloudIO::WithXMLNames(vtkPolyData* poly)
+{
+  vtkFieldData* sources[3] = { poly->GetPointData(), poly->GetCellData(), poly->GetFieldData() };
+  bool needed = false;
+  for (vtkFieldData* fd : sources)
+  {
+    for (int i = 0; i < fd->GetNumberOfArrays() && !needed; ++i)
+    {
+      const char* name = fd->GetAbstractArray(i) ? fd->GetAbstractArray(i)->GetName() : "";
+      needed = XMLName(name) != (name ? name : "");
+    }
+  }
+  if (!needed)
+  {
+    return poly;
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(poly);
+  vtkFieldData* targets[3] = { copy->GetPointData(), copy->GetCellData(), copy->GetFieldData() };
+  for (int f = 0; f < 3; ++f)
+  {
+    vtkFieldData* from = sources[f];
+    vtkFieldData* to = targets[f];
+    auto* attributes = vtkDataSetAttributes::SafeDownCast(from);
+    to->Initialize();
+    for (int i = 0; i < from->GetNumberOfArrays(); ++i)
+    {
+      vtkAbstractArray* a = from->GetAbstractArray(i);
+      std::string name = XMLName(a->GetName());
+      // AddArray replaces an array of the same name: a renamed one that meets another gets
+      // "_2", "_3", ...
+      const std::string base = name;
+      for (int suffix = 2; name != (a->GetName() ? a->GetName() : "") &&
+           (to->GetAbstractArray(name.c_str()) || from->GetAbstractArray(name.c_str()));
+           ++suffix)
+      {
+        name = base + "_" + std::to_string(suffix);
+      }
+      vtkSmartPointer<vtkAbstractArray> b = a;
+      if (name != (a->GetName() ? a->GetName() : ""))
+      {
+        b.TakeReference(a->NewInstance());
+        if (auto* values = vtkDataArray::SafeDownCast(a))
+        {
+          vtkDataArray::SafeDownCast(b)->ShallowCopy(values);
+        }
+        else
+        {
+          b->DeepCopy(a);
+        }
+        b->SetName(name.c_str());
+      }
+      to->AddArray(b);
+      const int attribute = attributes ? attributes->IsArrayAnAttribute(i) : -1;
+      if (attribute >= 0)
+      {
+        vtkDataSetAttributes::SafeDownCast(to)->SetActiveAttribute(i, attribute);
+      }
+    }
+  }
+  return copy;
+}
+
 namespace
 {
 // Whether `target` (a write target: links resolved) is something other than a regular file that
@@ -1394,7 +1496,7 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
   if (extension == "vtp")
   {
     auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    w->SetInputData(AsPolyData(data));
+    w->SetInputData(WithXMLNames(AsPolyData(data)));
     w->SetFileName(temporary.c_str());
     w->SetDataModeToAppended();
     writer = w;

@@ -141,6 +141,16 @@ public:
    */
   static void RemoveTemporaryFileInProgress();
 
+  /**
+   * `poly` with its arrays' names made fit for VTK's XML writers (VTK 9.1 writes names as they
+   * are): quotes, '<', '>', '&' and apostrophes as XML entities (the XML readers give the names
+   * back as they were), an empty name as "unnamed" (then "unnamed_2", ... where taken), control
+   * characters as '_'. `poly` itself when every name already is; else a shallow copy whose
+   * renamed arrays share the originals' values (the caller's arrays keep their names). Write()
+   * applies it to .vtp outputs; C++ only.
+   */
+  VTK_WRAPEXCLUDE static vtkSmartPointer<vtkPolyData> WithXMLNames(vtkPolyData* poly);
+
   ///@{
   /**
    * One vertex cell per point, 0 to n-1, with 32-bit storage when n allows: a new cell array

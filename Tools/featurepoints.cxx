@@ -1514,7 +1514,7 @@ private:
     writer->SetStartPiece(Rank);
     writer->SetEndPiece(Rank);
     writer->SetDataModeToAppended();
-    writer->SetInputData(written);
+    writer->SetInputData(vtkPointCloudIO::WithXMLNames(written));
     vtkNew<ErrorFlag> writeError;
     writer->AddObserver(vtkCommand::ErrorEvent, writeError);
     const int ok = writer->Write() == 1 && writeError->Message.empty() ? 1 : 0;

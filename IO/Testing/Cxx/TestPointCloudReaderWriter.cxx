@@ -136,6 +136,38 @@ int TestPointCloudReaderWriter(int argc, char* argv[])
     Check(reader->GetOutput()->GetMTime() == before, extension + ": read again without a change");
   }
 
+  // Array names that XML does not take as they are: written escaped, read back as they were (an
+  // empty one as "unnamed"); the caller's arrays keep their names.
+  {
+    vtkNew<vtkPolyData> named;
+    named->ShallowCopy(cloud);
+    vtkNew<vtkFloatArray> special, empty;
+    special->SetName("a\"b<c>&'d");
+    empty->SetName("");
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      special->InsertNextValue(static_cast<float>(i));
+      empty->InsertNextValue(static_cast<float>(2 * i));
+    }
+    named->GetPointData()->AddArray(special);
+    named->GetPointData()->AddArray(empty);
+    const std::string file = folder + "/names.vtp";
+    vtkNew<vtkPointCloudWriter> writer;
+    writer->SetInputData(named);
+    writer->SetFileName(file.c_str());
+    vtkNew<vtkPointCloudReader> reader;
+    reader->SetFileName(file.c_str());
+    const bool written = writer->Write() == 1;
+    reader->Update();
+    vtkDataArray* a = reader->GetOutput()->GetPointData()->GetArray("a\"b<c>&'d");
+    vtkDataArray* b = reader->GetOutput()->GetPointData()->GetArray("unnamed");
+    Check(written && reader->GetErrorMessage().empty() && a && b && a->GetTuple1(n - 1) == n - 1 &&
+        b->GetTuple1(n - 1) == 2 * (n - 1) && std::string(special->GetName()) == "a\"b<c>&'d" &&
+        std::string(empty->GetName()).empty(),
+      "vtp: array names with XML's special characters: '" + reader->GetErrorMessage() + "'");
+    std::remove(file.c_str());
+  }
+
   // Format overrides the extension.
   {
     const std::string file = folder + "/cloud.data";
