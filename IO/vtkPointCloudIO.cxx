@@ -555,6 +555,99 @@ bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string
   return true;
 }
 
+// A VTK XML file's declared array sizes against the file's size: VTK's reader allocates what a
+// DataArray's NumberOfComponents (times the piece's NumberOfPoints, for the points and point
+// data) declares before it reads, and a corrupt count made it spin for minutes or take 16 GB on
+// a file of 20 KB. An array must fit in the file's bytes times 1032, deflate's largest
+// compression ratio (raw, base64 and ascii data hold fewer values than bytes; zlib and LZ4 no more
+// than that): NumberOfComponents a whole number from 1, and one tuple, or every point's, within
+// that. Files compressed with LZMA, whose ratio has no such bound, are VTK's reader's to judge.
+bool CheckDeclaredSizes(const std::string& fileName, double fileSize, std::string& error)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  std::string head;
+  std::vector<char> chunk(1 << 16);
+  size_t end = std::string::npos;
+  while (in && end == std::string::npos && head.size() < (size_t(64) << 20))
+  {
+    const size_t from = head.size() > 16 ? head.size() - 16 : 0;
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    head.append(chunk.data(), static_cast<size_t>(in.gcount()));
+    end = head.find("<AppendedData", from);
+  }
+  const size_t fileTag = head.find("<VTKFile");
+  if (fileTag == std::string::npos ||
+    TagAttribute(head.substr(fileTag, head.find('>', fileTag) - fileTag), "compressor") ==
+      "vtkLZMADataCompressor")
+  {
+    return true;
+  }
+  const double capacity = 1032.0 * fileSize;
+  const std::map<std::string, int> sizes = { { "Float32", 4 }, { "Float64", 8 }, { "Int8", 1 },
+    { "UInt8", 1 }, { "Int16", 2 }, { "UInt16", 2 }, { "Int32", 4 }, { "UInt32", 4 },
+    { "Int64", 8 }, { "UInt64", 8 } };
+  for (size_t tag = head.find("<DataArray"); tag < end; tag = head.find("<DataArray", tag + 1))
+  {
+    const size_t tagEnd = head.find('>', tag);
+    if (tagEnd == std::string::npos || tagEnd > end)
+    {
+      break;
+    }
+    const std::string array = head.substr(tag, tagEnd - tag);
+    const std::string text = TagAttribute(array, "NumberOfComponents");
+    if (text.empty())
+    {
+      continue;
+    }
+    const std::string name = TagAttribute(array, "Name");
+    const std::string what = fileName + ": " +
+      (name.empty() ? std::string("an unnamed array") : "array '" + name + "'") +
+      " declares NumberOfComponents=\"" + text + "\"";
+    uint64_t components = 0;
+    const auto parsed = std::from_chars(text.data(), text.data() + text.size(), components);
+    if (parsed.ec != std::errc() || parsed.ptr != text.data() + text.size() || components == 0)
+    {
+      error = what + ": not a whole number of 1 or more";
+      return false;
+    }
+    const auto type = sizes.find(TagAttribute(array, "type"));
+    const double bytes = static_cast<double>(components) * (type == sizes.end() ? 1 : type->second);
+    // The points of its piece, for the points and the point data.
+    double points = 1.0;
+    const size_t piece = head.rfind("<Piece", tag);
+    const size_t section = std::max(head.rfind("<Points", tag) == std::string::npos
+        ? size_t(0) : head.rfind("<Points", tag) + 1,
+      head.rfind("<PointData", tag) == std::string::npos ? size_t(0)
+                                                          : head.rfind("<PointData", tag) + 1);
+    const size_t closed = std::max(head.rfind("</Points>", tag) == std::string::npos
+        ? size_t(0) : head.rfind("</Points>", tag) + 1,
+      head.rfind("</PointData>", tag) == std::string::npos ? size_t(0)
+                                                            : head.rfind("</PointData>", tag) + 1);
+    if (piece != std::string::npos && section > piece + 1 && section > closed)
+    {
+      const std::string pieceTag = head.substr(piece, head.find('>', piece) - piece);
+      const std::string declared = TagAttribute(pieceTag, "NumberOfPoints");
+      uint64_t n = 0;
+      if (std::from_chars(declared.data(), declared.data() + declared.size(), n).ec == std::errc())
+      {
+        points = std::max(1.0, static_cast<double>(n));
+      }
+    }
+    if (bytes * points > capacity)
+    {
+      char total[64];
+      std::snprintf(total, sizeof(total), "%.4g", bytes * points);
+      error = what +
+        (points > 1.0 ? " for " + std::to_string(static_cast<uint64_t>(points)) + " points"
+                      : std::string()) +
+        ": " + total + " bytes, more than a file of " +
+        std::to_string(static_cast<uint64_t>(fileSize)) + " bytes can hold (a corrupt count)";
+      return false;
+    }
+  }
+  return true;
+}
+
 // A VTK XML file's raw appended data against the file's size: VTK's reader fills the arrays of a
 // file cut short (or an offset before the data) with zeros or with the bytes around, and says
 // nothing. Each uncompressed array's block (its byte count, then its bytes) must lie within the
@@ -591,7 +684,10 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
   }
   const std::string file = head.substr(fileTag, fileTagEnd - fileTag);
   const std::string appendedTag = head.substr(appended, close - appended);
-  if (TagAttribute(appendedTag, "encoding") != "raw" || !TagAttribute(file, "compressor").empty())
+  const std::string compressor = TagAttribute(file, "compressor");
+  const std::string encoding = TagAttribute(appendedTag, "encoding");
+  const bool base64 = encoding == "base64";
+  if (encoding != "raw" && !(base64 && !compressor.empty()))
   {
     return true;
   }
@@ -604,6 +700,128 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
   const uint64_t start = underscore + 1;
   const int headerBytes = TagAttribute(file, "header_type") == "UInt64" ? 8 : 4;
   const bool bigEndian = TagAttribute(file, "byte_order") == "BigEndian";
+  // The bytes [from, from + count) of the block at appended offset `offset`, raw or base64 (the
+  // block's header encoded on its own, from the offset); false past the end of the file.
+  auto bytesAt = [&](uint64_t offset, uint64_t from, int count, unsigned char* out) {
+    if (offset > size || from > size)
+    {
+      return false;
+    }
+    if (!base64)
+    {
+      const uint64_t at = start + offset + from;
+      if (at + count > size)
+      {
+        return false;
+      }
+      in.clear();
+      in.seekg(static_cast<std::streamoff>(at));
+      in.read(reinterpret_cast<char*>(out), count);
+      return in.gcount() == count;
+    }
+    // Base64: 3 bytes a group of 4 characters.
+    const uint64_t first = from / 3, last = (from + count - 1) / 3;
+    const uint64_t at = start + offset + 4 * first;
+    const size_t chars = static_cast<size_t>(4 * (last - first + 1));
+    if (at + chars > size)
+    {
+      return false;
+    }
+    std::string text(chars, '\0');
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(at));
+    in.read(&text[0], static_cast<std::streamsize>(chars));
+    if (static_cast<size_t>(in.gcount()) != chars)
+    {
+      return false;
+    }
+    static const std::string alphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::vector<unsigned char> decoded;
+    for (size_t g = 0; g < chars; g += 4)
+    {
+      uint32_t v = 0;
+      for (size_t c = 0; c < 4; ++c)
+      {
+        const size_t d = text[g + c] == '=' ? 0 : alphabet.find(text[g + c]);
+        if (d == std::string::npos)
+        {
+          return false;
+        }
+        v = (v << 6) | static_cast<uint32_t>(d);
+      }
+      decoded.push_back(static_cast<unsigned char>(v >> 16));
+      decoded.push_back(static_cast<unsigned char>(v >> 8));
+      decoded.push_back(static_cast<unsigned char>(v));
+    }
+    std::copy_n(decoded.begin() + static_cast<std::ptrdiff_t>(from - 3 * first), count, out);
+    return true;
+  };
+  // Reads the header word `k` of the block at appended offset `offset`; false past the end.
+  auto word = [&](uint64_t offset, uint64_t k, uint64_t& value) {
+    unsigned char bytes[8] = { 0 };
+    if (k > size || !bytesAt(offset, k * headerBytes, headerBytes, bytes))
+    {
+      return false;
+    }
+    value = 0;
+    for (int b = 0; b < headerBytes; ++b)
+    {
+      value = (value << 8) | bytes[bigEndian ? b : headerBytes - 1 - b];
+    }
+    return true;
+  };
+  if (!compressor.empty())
+  {
+    // Compressed blocks: the number of blocks, the block size, the last block's size, then each
+    // block's compressed size. VTK's reader allocates the uncompressed size before it reads: a
+    // corrupt header made it take 7.6 GB and 30 s on a file of 19 KB. The headers and the
+    // compressed bytes must lie within the file, the uncompressed bytes within 1032 times it
+    // (deflate's largest ratio; not for LZMA, which has no such bound).
+    for (size_t tag = head.find("<DataArray"); tag < appended;
+         tag = head.find("<DataArray", tag + 1))
+    {
+      const std::string array = head.substr(tag, head.find('>', tag) - tag);
+      const std::string text = TagAttribute(array, "offset");
+      uint64_t offset = 0, blocks = 0, blockSize = 0, lastSize = 0;
+      if (TagAttribute(array, "format") != "appended" || !ParseOffset(text, offset))
+      {
+        continue;
+      }
+      const std::string name = TagAttribute(array, "Name");
+      const std::string what = fileName + ": " +
+        (name.empty() ? std::string("an unnamed array") : "array '" + name + "'") +
+        " at appended offset " + text;
+      if (!word(offset, 0, blocks) || !word(offset, 1, blockSize) || !word(offset, 2, lastSize))
+      {
+        error = what + ": its compressed block header runs past the end of the file (" +
+          std::to_string(size) + " bytes): the file is cut short";
+        return false;
+      }
+      uint64_t compressed = 0, part = 0;
+      bool inside = blocks <= size / headerBytes;
+      for (uint64_t b = 0; inside && b < blocks; ++b)
+      {
+        inside = word(offset, 3 + b, part) && part <= size && (compressed += part) <= size;
+      }
+      const double uncompressed = static_cast<double>(blocks) * static_cast<double>(blockSize);
+      // The bytes the header and the compressed blocks take in the file (base64: 4 for 3).
+      auto stored = [&](uint64_t n) { return base64 ? 4 * ((n + 2) / 3) : n; };
+      if (!inside || start + offset + stored((3 + blocks) * headerBytes) + stored(compressed) > size ||
+        (compressor != "vtkLZMADataCompressor" && uncompressed > 1032.0 * fileSize))
+      {
+        char total[64];
+        std::snprintf(total, sizeof(total), "%.4g", uncompressed);
+        error = what + " declares " + std::to_string(blocks) + " compressed blocks of " +
+          std::to_string(blockSize) + " bytes (" + total + " bytes" +
+          (inside ? ", " + std::to_string(compressed) + " compressed" : std::string()) +
+          "), more than the file of " + std::to_string(size) +
+          " bytes holds: a corrupt header or a file cut short";
+        return false;
+      }
+    }
+    return true;
+  }
   // The appended arrays (their tags, where they start in head) and their offsets, in order: no
   // block may run into the next one. Arrays not appended, or without an offset, are VTK's
   // reader's to judge.
@@ -939,7 +1157,8 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
 
   const bool vtkFormat = extension == "vtp" || extension == "vtu" || extension == "vtk";
   if ((extension == "vtp" || extension == "vtu") &&
-    !CheckAppendedData(fileName, static_cast<double>(info.st_size), error))
+    (!CheckDeclaredSizes(fileName, static_cast<double>(info.st_size), error) ||
+      !CheckAppendedData(fileName, static_cast<double>(info.st_size), error)))
   {
     return nullptr;
   }

@@ -276,7 +276,16 @@ void HugeCounts()
     "<DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">\n" +
       points + "\n</DataArray>\n</Points>\n</Piece>\n</PolyData>\n</VTKFile>\n");
   ExpectFailure("VTP declaring 10^12 points", { Path("huge.vtp"), Path("o.vtp") }, 1,
-    "huge.vtp: cannot read: not enough memory");
+    "huge.vtp: an unnamed array declares NumberOfComponents=\"3\" for 1000000000000 points");
+  // NumberOfComponents 2^32: VTK's reader spun until the 60 s limit (2^31 - 1: 16 GB).
+  Spit(Path("components.vtp"),
+    "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+    "byte_order=\"LittleEndian\">\n<PolyData>\n<Piece NumberOfPoints=\"100\" "
+    "NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n<Points>\n"
+    "<DataArray type=\"Float32\" NumberOfComponents=\"4294967296\" format=\"ascii\">\n" +
+      points + "\n</DataArray>\n</Points>\n</Piece>\n</PolyData>\n</VTKFile>\n");
+  ExpectFailure("VTP declaring 2^32 components", { Path("components.vtp"), Path("o.vtp") }, 1,
+    "components.vtp: an unnamed array declares NumberOfComponents=\"4294967296\" for 100 points");
   Spit(Path("huge.vtk"),
     "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 1000000000000 float\n0 0 0 "
     "1 0 0 0 1 0\n");
