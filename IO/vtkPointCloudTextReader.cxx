@@ -161,6 +161,19 @@ char SniffDelimiter(std::string_view line, int format)
   return comma ? ',' : semicolon ? ';' : ' ';
 }
 
+// The first column that gives component k of array a.
+size_t FirstColumn(const std::vector<ColumnTarget>& targets, int a, int k)
+{
+  for (size_t c = 0; c < targets.size(); ++c)
+  {
+    if (targets[c].Array == a && targets[c].Component == k)
+    {
+      return c;
+    }
+  }
+  return 0;
+}
+
 // Header names to column targets: x/y/z, nx/ny/nz as Normals, NAME:k as components of NAME.
 std::vector<ColumnTarget> TargetsFromHeader(
   const std::vector<std::string>& names, std::vector<ArraySpec>& arrays, std::string& problem)
@@ -246,8 +259,8 @@ std::vector<ColumnTarget> TargetsFromHeader(
   {
     if (arrays[a].Components > static_cast<int>(n))
     {
-      problem = "the header's columns for '" + arrays[a].Name + "' do not give component 0 to " +
-        std::to_string(arrays[a].Components - 1) + " exactly once";
+      problem = "the header names component " + std::to_string(arrays[a].Components - 1) +
+        " of '" + arrays[a].Name + "', but has only " + std::to_string(n) + " columns";
       return {};
     }
     seen[a].assign(arrays[a].Components, 0);
@@ -263,12 +276,31 @@ std::vector<ColumnTarget> TargetsFromHeader(
   {
     for (int k = 0; k < arrays[a].Components; ++k)
     {
-      if (seen[a][k] != 1)
+      if (seen[a][k] == 1)
       {
-        problem = "the header's columns for '" + arrays[a].Name + "' do not give component " +
-          std::to_string(k) + " exactly once";
+        continue;
+      }
+      if (seen[a][k] == 0)
+      {
+        problem = "the header names components of '" + arrays[a].Name + "' up to " +
+          std::to_string(arrays[a].Components - 1) + " but no column '" + arrays[a].Name + ":" +
+          std::to_string(k) + "'";
         return {};
       }
+      // The same name twice: which columns (counting from 1).
+      std::string columns;
+      for (size_t c = 0; c < n; ++c)
+      {
+        if (targets[c].Array == static_cast<int>(a) && targets[c].Component == k)
+        {
+          columns += (columns.empty() ? "" : " and ") + std::to_string(c + 1);
+        }
+      }
+      const std::string& name = names[FirstColumn(targets, static_cast<int>(a), k)];
+      problem = (name.empty() ? std::string("the header leaves more than one column unnamed")
+                              : "the header names '" + name + "' more than once") +
+        " (columns " + columns + ")";
+      return {};
     }
   }
   return targets;

@@ -157,6 +157,12 @@ int TestPointCloudText(int argc, char* argv[])
   }
   ExpectError(folder, "twocolumns.xyz", "1 2\n", "a point needs 3 coordinates");
   ExpectError(folder, "noxyz.csv", "a,b,c\n1,2,3\n", "names no x, y and z");
+  ExpectError(folder, "twice.csv", "x,y,z,a,b,a\n1,2,3,4,5,6\n",
+    "the header names 'a' more than once (columns 4 and 6)");
+  ExpectError(folder, "unnamed.csv", "x,y,z,,\n1,2,3,4,5\n",
+    "the header leaves more than one column unnamed (columns 4 and 5)");
+  ExpectError(folder, "gap.csv", "x,y,z,c:0,c:2\n1,2,3,4,5\n",
+    "the header names components of 'c' up to 2 but no column 'c:1'");
   ExpectError(folder, "comments.txt", "# nothing\n\n", "holds no point");
   ExpectError(folder, "count.pts", "3\n0 0 0\n1 1 1\n", ":1: the count line says 3 points but the file has 2");
   ExpectError(folder, "scans.pts", "1\n0 0 0\n2\n1 1 1\n",
