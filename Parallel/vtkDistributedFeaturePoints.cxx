@@ -1284,6 +1284,11 @@ int vtkDistributedFeaturePoints::RequestData(
   // 7. The own points' results.
   vtkNew<vtkFieldData> fieldData;
   fieldData->ShallowCopy(result->GetFieldData());
+  // The input's active normals, which a detector's output keeps active (its own replace them
+  // under the same name) and the rows below do not carry.
+  vtkDataArray* activeNormals = input ? input->GetPointData()->GetNormals() : nullptr;
+  const std::string normalsName =
+    activeNormals && activeNormals->GetName() ? activeNormals->GetName() : "";
   Layout outLayout;
   Rows ownResult;
   {
@@ -1340,6 +1345,10 @@ int vtkDistributedFeaturePoints::RequestData(
   if (const char* scalars = detector->GetScoreArrayName())
   {
     full->GetPointData()->SetActiveScalars(scalars);
+  }
+  if (!normalsName.empty() && full->GetPointData()->GetArray(normalsName.c_str()))
+  {
+    full->GetPointData()->SetActiveNormals(normalsName.c_str());
   }
   if (featuresOnly)
   {
