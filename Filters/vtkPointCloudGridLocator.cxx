@@ -578,7 +578,40 @@ void vtkPointCloudGridLocator::BuildGrid(vtkPoints* points,
 
   // The box: the bounds, or the central 99 % of the points widened by half its size when a few
   // far outliers stretch the bounds more than four times (they then share the border cells).
+  // Where more outliers than that stretch it (a few per cent of the points spread far around a
+  // dense part), the dense part falls into a few cells, and every query there compares most of
+  // its points: the central 95 % and 80 % are tried too, and the box whose cells a query reads
+  // least (the sum over cells of the squared number of points, on a sample) wins.
   double lo[3], hi[3];
+  const double cells = 2.0 * static_cast<double>(m);
+  // Cell side for a box: the smallest for which the grid has at most two cells per point.
+  auto sideOf = [&](const double* blo, const double* bhi) {
+    double extent[3], largest = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      extent[a] = bhi[a] - blo[a];
+      largest = std::max(largest, extent[a]);
+    }
+    if (!(largest > 0.0))
+    {
+      largest = 1.0;
+    }
+    auto count = [&](double h) {
+      double product = 1.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        product *= std::max(1.0, std::ceil(extent[a] / h));
+      }
+      return product;
+    };
+    double small = largest * 1e-7, big = largest * 1.000001;
+    for (int iteration = 0; iteration < 100 && big / small > 1.0001; ++iteration)
+    {
+      const double h = std::sqrt(small * big);
+      (count(h) > cells ? small : big) = h;
+    }
+    return big;
+  };
   {
     const vtkIdType stride = std::max<vtkIdType>(1, m / 100000);
     std::vector<double> sample[3];
@@ -595,48 +628,99 @@ void vtkPointCloudGridLocator::BuildGrid(vtkPoints* points,
         }
       }
     }
+    const std::vector<double> points[3] = { sample[0], sample[1], sample[2] };
+    // The central part of the sample between ranks `cut` and size - 1 - cut on each axis, widened
+    // by half its size where the bounds are more than four times as wide.
+    auto central = [&](size_t cut, double* blo, double* bhi) {
+      for (int a = 0; a < 3; ++a)
+      {
+        blo[a] = bounds[2 * a];
+        bhi[a] = bounds[2 * a + 1];
+        std::vector<double>& v = sample[a];
+        if (v.empty())
+        {
+          continue;
+        }
+        const double rlo = featurepoints::ValueOfRank(v, std::min(cut, v.size() - 1));
+        const double rhi = featurepoints::ValueOfRank(v, v.size() - 1 - std::min(cut, v.size() - 1));
+        const double robust = rhi - rlo;
+        if (robust > 0.0 && bhi[a] - blo[a] > 4.0 * robust)
+        {
+          blo[a] = std::max(blo[a], rlo - 0.5 * robust);
+          bhi[a] = std::min(bhi[a], rhi + 0.5 * robust);
+        }
+      }
+    };
+    // The sample's pairs within cells of a box, its points beyond it clamped to its border cells.
+    auto costOf = [&](const double* blo, const double* bhi) {
+      const double h = sideOf(blo, bhi);
+      int dims[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        dims[a] = static_cast<int>(std::max(1.0, std::ceil((bhi[a] - blo[a]) / h)));
+      }
+      std::vector<int64_t> index(points[0].size());
+      for (size_t i = 0; i < index.size(); ++i)
+      {
+        int64_t c = 0;
+        for (int a = 2; a >= 0; --a)
+        {
+          const double f = std::floor((points[a][i] - blo[a]) / h);
+          const int64_t k = f < 0.0 ? 0 : (f >= dims[a] - 1 ? dims[a] - 1 : static_cast<int64_t>(f));
+          c = c * dims[a] + k;
+        }
+        index[i] = c;
+      }
+      std::sort(index.begin(), index.end());
+      double cost = 0.0;
+      for (size_t i = 0; i < index.size();)
+      {
+        size_t j = i;
+        while (j < index.size() && index[j] == index[i])
+        {
+          ++j;
+        }
+        cost += static_cast<double>(j - i) * static_cast<double>(j - i);
+        i = j;
+      }
+      return cost;
+    };
+    const size_t size = points[0].size();
+    central(size / 200, lo, hi);
+    // Only where the central 80 % is less than a quarter of the box on some axis, and the
+    // sample's queries compare more than 64 points of their own cell on average (a regular
+    // cloud: a few).
+    double narrow[2][3];
+    central(size / 10, narrow[0], narrow[1]);
+    bool compare = false;
     for (int a = 0; a < 3; ++a)
     {
-      lo[a] = bounds[2 * a];
-      hi[a] = bounds[2 * a + 1];
-      std::vector<double>& v = sample[a];
-      double rlo, rhi;
-      featurepoints::CentralRange(v, rlo, rhi);
-      const double robust = rhi - rlo;
-      if (robust > 0.0 && hi[a] - lo[a] > 4.0 * robust)
+      compare = compare || narrow[1][a] - narrow[0][a] < 0.25 * (hi[a] - lo[a]);
+    }
+    double best = size && compare ? costOf(lo, hi) : 0.0;
+    for (const size_t divisor : { size_t(40), size_t(10) })
+    {
+      if (!(best > 64.0 * static_cast<double>(size)))
       {
-        lo[a] = std::max(lo[a], rlo - 0.5 * robust);
-        hi[a] = std::min(hi[a], rhi + 0.5 * robust);
+        break;
+      }
+      double clo[3], chi[3];
+      central(size / divisor, clo, chi);
+      const double cost = costOf(clo, chi);
+      if (cost < 0.5 * best)
+      {
+        best = cost;
+        std::copy(clo, clo + 3, lo);
+        std::copy(chi, chi + 3, hi);
       }
     }
   }
-  // Cell side: the smallest for which the grid has at most two cells per point.
-  double extent[3], largest = 0.0;
+  double extent[3];
   for (int a = 0; a < 3; ++a)
   {
     extent[a] = hi[a] - lo[a];
-    largest = std::max(largest, extent[a]);
   }
-  if (!(largest > 0.0))
-  {
-    largest = 1.0;
-  }
-  const double cells = 2.0 * static_cast<double>(m);
-  auto count = [&](double h) {
-    double product = 1.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      product *= std::max(1.0, std::ceil(extent[a] / h));
-    }
-    return product;
-  };
-  double small = largest * 1e-7, big = largest * 1.000001;
-  for (int iteration = 0; iteration < 100 && big / small > 1.0001; ++iteration)
-  {
-    const double h = std::sqrt(small * big);
-    (count(h) > cells ? small : big) = h;
-  }
-  g.Spacing = big;
+  g.Spacing = sideOf(lo, hi);
   for (int a = 0; a < 3; ++a)
   {
     g.Origin[a] = lo[a];

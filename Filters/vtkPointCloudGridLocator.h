@@ -7,7 +7,11 @@
  * about two cells per point, over the points' *robust* bounding box: when a few far outliers
  * stretch the bounds more than four times the central 99 % of the points, the box is that central
  * part widened by half its size, and the points beyond it are kept in the border cells (which
- * reach to infinity). A query searches rings of cells around the cell of its position, nearest
+ * reach to infinity). Where the central 80 % is less than a quarter of that box on some axis,
+ * the central 95 % and 80 % (widened alike) are tried too, and the box whose cells hold the
+ * fewest pairs of points on a sample of 100,000 wins (needed only when it halves them): a few
+ * per cent of the points spread far around a dense part no longer put that part in a handful
+ * of cells. The box changes how fast the queries are, never what they return. A query searches rings of cells around the cell of its position, nearest
  * first, and stops when the best distances found are below the distance to the unsearched cells,
  * so every answer is exact. Candidates are ordered by (distance, point id): where distances tie
  * exactly, the smaller id comes first, whatever the order the cells are read in.

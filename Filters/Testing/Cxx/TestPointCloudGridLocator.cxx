@@ -437,6 +437,47 @@ void Representation()
 }
 } // namespace
 
+// A dense cube and 3 % of the points spread a million times further: the grid's box is the cube's
+// (its cells resolve the cube; the bounds would put it in one cell), and the nearest points are
+// still exact.
+void SpreadOutliers()
+{
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), far(-1e6, 1e6);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int i = 0; i < 20000; ++i)
+  {
+    points->InsertNextPoint(unit(random), unit(random), unit(random));
+  }
+  for (int i = 0; i < 600; ++i)
+  {
+    points->InsertNextPoint(far(random), far(random), far(random));
+  }
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  vtkNew<vtkPointCloudGridLocator> grid;
+  grid->SetDataSet(data);
+  grid->BuildLocator();
+  vtkNew<vtkPolyData> outline;
+  grid->GenerateRepresentation(0, outline);
+  double box[6];
+  outline->GetBounds(box);
+  vtkNew<vtkStaticPointLocator> reference;
+  reference->SetDataSet(data);
+  reference->BuildLocator();
+  vtkNew<vtkIdList> expected, found;
+  bool same = true;
+  for (vtkIdType q = 0; q < 20600; q += 1000)
+  {
+    reference->FindClosestNPoints(10, points->GetPoint(q), expected);
+    grid->FindClosestNPoints(10, points->GetPoint(q), found);
+    same = same && IdsOf(expected) == IdsOf(found);
+  }
+  std::printf("spread outliers: box %g wide\n", box[1] - box[0]);
+  Check(box[1] - box[0] < 10.0 && same, "spread outliers: the cube's box, exact nearest points");
+}
+
 int TestPointCloudGridLocator(int, char*[])
 {
   for (const char* kind : { "volume", "sheet", "cluster", "lattice", "duplicates", "nan" })
@@ -446,5 +487,6 @@ int TestPointCloudGridLocator(int, char*[])
   }
   Degenerate();
   Representation();
+  SpreadOutliers();
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
