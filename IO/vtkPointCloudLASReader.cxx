@@ -199,8 +199,9 @@ int vtkPointCloudLASReader::RequestData(
       std::to_string(fileSize) + " bytes)");
   }
   const int formatByte = static_cast<unsigned char>(header[PointFormatAt]);
-  // LASzip marks its files by setting bit 7 (and 6) of the point data record format.
-  if (formatByte & 0xC0)
+  // LASzip marks its files by setting bit 7 (and 6) of a point data record format 0 to 10 (with
+  // another format below, such as 99, the byte is just a format this reader does not know).
+  if ((formatByte & 0xC0) && (formatByte & 0x3F) <= 10)
   {
     return fail(vtkErrorCode::FileFormatError, laz);
   }

@@ -237,6 +237,14 @@ void Compressed()
   r = Read(marked);
   FEATUREPOINTS_CHECK(
     r.Message.find(marked + ": " + expected) == 0, "compression bit: [%s]", r.Message.c_str());
+  f.FormatByte = 99; // bit 6 set, but no LASzip format under it: an unknown format, not LAZ
+  const std::string unknown = PathOf("format99.las");
+  Spit(unknown, Bytes(f));
+  r = Read(unknown);
+  FEATUREPOINTS_CHECK(
+    r.Message.find("unsupported point data record format 99 (0 to 10 are read)") !=
+        std::string::npos,
+    "format 99: [%s]", r.Message.c_str());
 }
 
 // Malformed files: one line naming the file and the problem, an empty output, no allocation of
