@@ -555,6 +555,48 @@ bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string
   return true;
 }
 
+// The XML of a VTK XML file up to its "<AppendedData" tag (at most its first 64 MB where it has
+// none) into `head`; returns where that tag starts (npos: none).
+size_t ReadXMLHead(std::ifstream& in, std::string& head)
+{
+  std::vector<char> chunk(1 << 16);
+  size_t appended = std::string::npos;
+  while (in && appended == std::string::npos && head.size() < (size_t(64) << 20))
+  {
+    const size_t from = head.size() > 16 ? head.size() - 16 : 0; // the tag may straddle reads
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    head.append(chunk.data(), static_cast<size_t>(in.gcount()));
+    appended = head.find("<AppendedData", from);
+  }
+  return appended;
+}
+
+// The DataArray tags of `head` before `end`: where each starts, and its text.
+std::vector<std::pair<size_t, std::string>> DataArrayTags(const std::string& head, size_t end)
+{
+  std::vector<std::pair<size_t, std::string>> tags;
+  for (size_t tag = head.find("<DataArray"); tag < end; tag = head.find("<DataArray", tag + 1))
+  {
+    const size_t tagEnd = head.find('>', tag);
+    if (tagEnd == std::string::npos || tagEnd > end)
+    {
+      break;
+    }
+    tags.emplace_back(tag, head.substr(tag, tagEnd - tag));
+  }
+  return tags;
+}
+
+// Bytes per value of the VTK XML types (0 for an unknown type).
+int BytesPerValue(const std::string& type)
+{
+  static const std::map<std::string, int> sizes = { { "Float32", 4 }, { "Float64", 8 },
+    { "Int8", 1 }, { "UInt8", 1 }, { "Int16", 2 }, { "UInt16", 2 }, { "Int32", 4 },
+    { "UInt32", 4 }, { "Int64", 8 }, { "UInt64", 8 } };
+  const auto found = sizes.find(type);
+  return found == sizes.end() ? 0 : found->second;
+}
+
 // A VTK XML file's declared array sizes against the file's size: VTK's reader allocates what a
 // DataArray's NumberOfComponents (times the piece's NumberOfPoints, for the points and point
 // data) declares before it reads, and a corrupt count made it spin for minutes or take 16 GB on
@@ -566,15 +608,7 @@ bool CheckDeclaredSizes(const std::string& fileName, double fileSize, std::strin
 {
   std::ifstream in(fileName, std::ios::binary);
   std::string head;
-  std::vector<char> chunk(1 << 16);
-  size_t end = std::string::npos;
-  while (in && end == std::string::npos && head.size() < (size_t(64) << 20))
-  {
-    const size_t from = head.size() > 16 ? head.size() - 16 : 0;
-    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    head.append(chunk.data(), static_cast<size_t>(in.gcount()));
-    end = head.find("<AppendedData", from);
-  }
+  const size_t end = ReadXMLHead(in, head);
   const size_t fileTag = head.find("<VTKFile");
   if (fileTag == std::string::npos ||
     TagAttribute(head.substr(fileTag, head.find('>', fileTag) - fileTag), "compressor") ==
@@ -583,17 +617,8 @@ bool CheckDeclaredSizes(const std::string& fileName, double fileSize, std::strin
     return true;
   }
   const double capacity = 1032.0 * fileSize;
-  const std::map<std::string, int> sizes = { { "Float32", 4 }, { "Float64", 8 }, { "Int8", 1 },
-    { "UInt8", 1 }, { "Int16", 2 }, { "UInt16", 2 }, { "Int32", 4 }, { "UInt32", 4 },
-    { "Int64", 8 }, { "UInt64", 8 } };
-  for (size_t tag = head.find("<DataArray"); tag < end; tag = head.find("<DataArray", tag + 1))
+  for (const auto& [tag, array] : DataArrayTags(head, end))
   {
-    const size_t tagEnd = head.find('>', tag);
-    if (tagEnd == std::string::npos || tagEnd > end)
-    {
-      break;
-    }
-    const std::string array = head.substr(tag, tagEnd - tag);
     const std::string text = TagAttribute(array, "NumberOfComponents");
     if (text.empty())
     {
@@ -610,8 +635,8 @@ bool CheckDeclaredSizes(const std::string& fileName, double fileSize, std::strin
       error = what + ": not a whole number of 1 or more";
       return false;
     }
-    const auto type = sizes.find(TagAttribute(array, "type"));
-    const double bytes = static_cast<double>(components) * (type == sizes.end() ? 1 : type->second);
+    const int perValue = BytesPerValue(TagAttribute(array, "type"));
+    const double bytes = static_cast<double>(components) * (perValue > 0 ? perValue : 1);
     // The points of its piece, for the points and the point data.
     double points = 1.0;
     const size_t piece = head.rfind("<Piece", tag);
@@ -656,19 +681,12 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
 {
   std::ifstream in(fileName, std::ios::binary);
   std::string head;
-  std::vector<char> chunk(1 << 16);
-  size_t appended = std::string::npos;
-  while (in && appended == std::string::npos && head.size() < (size_t(64) << 20))
-  {
-    const size_t from = head.size() > 16 ? head.size() - 16 : 0; // the tag may straddle reads
-    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    head.append(chunk.data(), static_cast<size_t>(in.gcount()));
-    appended = head.find("<AppendedData", from);
-  }
+  const size_t appended = ReadXMLHead(in, head);
   if (appended == std::string::npos)
   {
     return true;
   }
+  std::vector<char> chunk(1 << 16);
   size_t close = head.find('>', appended);
   while (close == std::string::npos && in)
   {
@@ -778,10 +796,9 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
     // corrupt header made it take 7.6 GB and 30 s on a file of 19 KB. The headers and the
     // compressed bytes must lie within the file, the uncompressed bytes within 1032 times it
     // (deflate's largest ratio; not for LZMA, which has no such bound).
-    for (size_t tag = head.find("<DataArray"); tag < appended;
-         tag = head.find("<DataArray", tag + 1))
+    for (const auto& tagged : DataArrayTags(head, appended))
     {
-      const std::string array = head.substr(tag, head.find('>', tag) - tag);
+      const std::string& array = tagged.second;
       const std::string text = TagAttribute(array, "offset");
       uint64_t offset = 0, blocks = 0, blockSize = 0, lastSize = 0;
       if (TagAttribute(array, "format") != "appended" || !ParseOffset(text, offset))
@@ -827,14 +844,8 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
   // reader's to judge.
   std::vector<size_t> tags;
   std::vector<uint64_t> starts;
-  for (size_t tag = head.find("<DataArray"); tag < appended; tag = head.find("<DataArray", tag + 1))
+  for (const auto& [tag, array] : DataArrayTags(head, appended))
   {
-    const size_t tagEnd = head.find('>', tag);
-    if (tagEnd == std::string::npos || tagEnd > appended)
-    {
-      break;
-    }
-    const std::string array = head.substr(tag, tagEnd - tag);
     const std::string text = TagAttribute(array, "offset");
     uint64_t offset = 0;
     if (TagAttribute(array, "format") != "appended" || text.empty())
@@ -941,11 +952,7 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
     }
     const std::string pieceTag = head.substr(piece, head.find('>', piece) - piece);
     const std::string declared = TagAttribute(pieceTag, "NumberOfPoints");
-    const std::string type = TagAttribute(array, "type");
-    const std::map<std::string, int> sizes = { { "Float32", 4 }, { "Float64", 8 }, { "Int8", 1 },
-      { "UInt8", 1 }, { "Int16", 2 }, { "UInt16", 2 }, { "Int32", 4 }, { "UInt32", 4 },
-      { "Int64", 8 }, { "UInt64", 8 } };
-    const auto bytesPerValue = sizes.find(type);
+    const int bytesPerValue = BytesPerValue(TagAttribute(array, "type"));
     uint64_t n = 0, components = 3;
     const auto parsedPoints =
       std::from_chars(declared.data(), declared.data() + declared.size(), n);
@@ -955,12 +962,12 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
       const char* c = componentsText.data();
       std::from_chars(c, c + componentsText.size(), components);
     }
-    if (bytesPerValue == sizes.end() || parsedPoints.ec != std::errc() || components == 0 ||
+    if (bytesPerValue == 0 || parsedPoints.ec != std::errc() || components == 0 ||
       components > 64)
     {
       continue; // VTK's reader says what is wrong with those
     }
-    const uint64_t per = components * static_cast<uint64_t>(bytesPerValue->second);
+    const uint64_t per = components * static_cast<uint64_t>(bytesPerValue);
     if (n > count / per || n * per != count)
     {
       error = fileName + ": a piece declares NumberOfPoints=\"" + declared +
