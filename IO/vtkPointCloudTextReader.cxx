@@ -142,6 +142,12 @@ void Split(std::string_view line, char delimiter, std::vector<std::string_view>&
     }
     start = end + 1;
   }
+  // One delimiter ending the line (spreadsheets export rows as "1,2,3,") ends the last field; it
+  // opens no empty one.
+  if (fields.size() > 1 && fields.back().empty() && !line.empty() && line.back() == delimiter)
+  {
+    fields.pop_back();
+  }
 }
 
 // The field separator, from the first line that is not a comment: the format's own (blanks for

@@ -159,8 +159,15 @@ int TestPointCloudText(int argc, char* argv[])
   ExpectError(folder, "noxyz.csv", "a,b,c\n1,2,3\n", "names no x, y and z");
   ExpectError(folder, "twice.csv", "x,y,z,a,b,a\n1,2,3,4,5,6\n",
     "the header names 'a' more than once (columns 4 and 6)");
-  ExpectError(folder, "unnamed.csv", "x,y,z,,\n1,2,3,4,5\n",
+  ExpectError(folder, "unnamed.csv", "x,y,z,,,w\n1,2,3,4,5,6\n",
     "the header leaves more than one column unnamed (columns 4 and 5)");
+  {
+    // A delimiter ending every line (a spreadsheet's export) opens no empty column.
+    Read r(Write(folder, "trailing.csv", "x,y,z,\n1,2,3,\n4,5,6,\n"));
+    Check(r.Error.empty() && r.Output->GetNumberOfPoints() == 2 &&
+        r.Output->GetPointData()->GetNumberOfArrays() == 0 && r.Output->GetPoint(1)[2] == 6,
+      "trailing.csv: " + r.Error);
+  }
   ExpectError(folder, "gap.csv", "x,y,z,c:0,c:2\n1,2,3,4,5\n",
     "the header names components of 'c' up to 2 but no column 'c:1'");
   ExpectError(folder, "comments.txt", "# nothing\n\n", "holds no point");
