@@ -698,14 +698,23 @@ void vtkPointCloudGridLocator::BuildGrid(vtkPoints* points,
       compare = compare || narrow[1][a] - narrow[0][a] < 0.25 * (hi[a] - lo[a]);
     }
     double best = size && compare ? costOf(lo, hi) : 0.0;
-    for (const size_t divisor : { size_t(40), size_t(10) })
+    for (int candidate = 0; candidate < 2; ++candidate)
     {
       if (!(best > 64.0 * static_cast<double>(size)))
       {
         break;
       }
+      // The central 95 %, then the central 80 % (computed above).
       double clo[3], chi[3];
-      central(size / divisor, clo, chi);
+      if (candidate == 0)
+      {
+        central(size / 40, clo, chi);
+      }
+      else
+      {
+        std::copy(narrow[0], narrow[0] + 3, clo);
+        std::copy(narrow[1], narrow[1] + 3, chi);
+      }
       const double cost = costOf(clo, chi);
       if (cost < 0.5 * best)
       {
