@@ -8,7 +8,7 @@ set -euo pipefail
 # liblzf-dev: PCD's binary_compressed data (the IO module, built in both modes).
 # mpi-default-dev: VTK's MPI modules need it to build FeaturePoints::Parallel; openmpi-bin:
 # mpiexec, for distributed runs and their tests (both modes).
-common=(cmake g++ make libeigen3-dev liblzf-dev xvfb xauth mpi-default-dev openmpi-bin)
+common=(cmake g++ make libeigen3-dev libnanoflann-dev liblzf-dev xvfb xauth mpi-default-dev openmpi-bin)
 if [ "${1:-}" = "--paraview" ]; then
   # paraview-dev's CMake package finds Qt 5 and the system libraries its bundled VTK was built
   # with, but depends on none of their -dev packages: they are listed here.

@@ -2,8 +2,10 @@
 // by the smaller id) and against vtkStaticPointLocator (same distances), on a random volume, a
 // thin sheet, a tight cluster with far outliers (robust box), an integer lattice (every distance
 // ties many times), a cloud with stacked duplicates and one with NaN points; queries at the points
-// themselves, between them and outside the box. Then the degenerate data sets: empty, one point,
-// all points non-finite. Then the batched FindNearestNeighbors() and GenerateRepresentation().
+// themselves, between them and outside the box. Each with the grid and with the k-d tree
+// (SetSearchStructure()), which must give the same answers. Then the degenerate data sets: empty,
+// one point, all points non-finite. Then the batched FindNearestNeighbors(),
+// GenerateRepresentation(), and clusters far apart (where AUTO picks the tree).
 #include "vtkCellArray.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
@@ -111,14 +113,19 @@ std::vector<vtkIdType> IdsOf(vtkIdList* list)
   return std::vector<vtkIdType>(list->GetPointer(0), list->GetPointer(0) + list->GetNumberOfIds());
 }
 
-void CompareQueries(const std::string& kind)
+void CompareQueries(const std::string& kind, int structure)
 {
   vtkSmartPointer<vtkPolyData> data = Cloud(kind, 1500, 11);
   vtkPoints* points = data->GetPoints();
   const vtkIdType n = points->GetNumberOfPoints();
   vtkNew<vtkPointCloudGridLocator> grid;
   grid->SetDataSet(data);
+  grid->SetSearchStructure(structure);
   grid->BuildLocator();
+  const std::string name =
+    kind + (structure == vtkPointCloudGridLocator::KD_TREE ? " (tree)" : " (grid)");
+  Check(grid->GetUsesTree() == (structure == vtkPointCloudGridLocator::KD_TREE),
+    name + ": the structure asked for");
   // The static locator is given the finite points only (a NaN has no bucket there).
   vtkNew<vtkPoints> finite;
   std::vector<vtkIdType> finiteId;
@@ -136,7 +143,7 @@ void CompareQueries(const std::string& kind)
   reference->SetDataSet(finiteData);
   reference->BuildLocator();
   Check(grid->GetNumberOfGridPoints() == static_cast<vtkIdType>(finiteId.size()),
-    kind + ": number of grid points");
+    name + ": number of grid points");
 
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1.5, 1.5);
@@ -236,19 +243,22 @@ void CompareQueries(const std::string& kind)
   mismatches += grid->FindClosestPoint(nowhere) == -1 && a->GetNumberOfIds() == 0 ? 0 : 1;
   std::printf("%-10s %ld queries: %ld mismatches with the brute force, %ld distance mismatches "
               "with vtkStaticPointLocator\n",
-    kind.c_str(), queries, mismatches, distanceMismatches);
-  Check(queries > 250 && mismatches == 0 && distanceMismatches == 0, kind + ": queries");
+    name.c_str(), queries, mismatches, distanceMismatches);
+  Check(queries > 250 && mismatches == 0 && distanceMismatches == 0, name + ": queries");
 }
 
 // The batched query: row r holds the k nearest *other* points of ids[r], as the brute force.
-void CompareBatched(const std::string& kind)
+void CompareBatched(const std::string& kind, int structure)
 {
   vtkSmartPointer<vtkPolyData> data = Cloud(kind, 1200, 13);
   vtkPoints* points = data->GetPoints();
   const vtkIdType n = points->GetNumberOfPoints();
   vtkNew<vtkPointCloudGridLocator> grid;
   grid->SetDataSet(data);
+  grid->SetSearchStructure(structure);
   grid->BuildLocator();
+  const std::string name =
+    kind + (structure == vtkPointCloudGridLocator::KD_TREE ? " (tree)" : " (grid)");
   long mismatches = 0;
   // Every third point (the slots marked in an array over the grid), and every 40th (fewer than a
   // sixteenth of the points: the listed rows sorted).
@@ -321,11 +331,11 @@ void CompareBatched(const std::string& kind)
       ? 0
       : 1;
   }
-  std::printf("batched %-10s: %ld mismatches with the brute force\n", kind.c_str(), mismatches);
-  Check(mismatches == 0, kind + ": batched");
+  std::printf("batched %-17s: %ld mismatches with the brute force\n", name.c_str(), mismatches);
+  Check(mismatches == 0, name + ": batched");
 }
 
-void Degenerate()
+void Degenerate(int structure)
 {
   vtkNew<vtkIdList> result;
   const double x[3] = { 0.1, 0.2, 0.3 };
@@ -337,6 +347,7 @@ void Degenerate()
     vtkNew<vtkPoints> none;
     empty->SetPoints(none);
     vtkNew<vtkPointCloudGridLocator> grid;
+    grid->SetSearchStructure(structure);
     grid->SetDataSet(empty);
     grid->BuildLocator();
     grid->FindClosestNPoints(4, x, result);
@@ -353,6 +364,7 @@ void Degenerate()
     single->InsertNextPoint(5.0, -2.0, 1.0);
     one->SetPoints(single);
     vtkNew<vtkPointCloudGridLocator> grid;
+    grid->SetSearchStructure(structure);
     grid->SetDataSet(one);
     grid->FindClosestNPoints(4, x, result); // builds on first use
     double dist2 = 0.0;
@@ -372,6 +384,7 @@ void Degenerate()
     nans->InsertNextPoint(0.0, HUGE_VAL, 0.0);
     bad->SetPoints(nans);
     vtkNew<vtkPointCloudGridLocator> grid;
+    grid->SetSearchStructure(structure);
     grid->SetDataSet(bad);
     grid->BuildLocator();
     grid->FindPointsWithinRadius(1e300, x, result);
@@ -396,6 +409,7 @@ void Degenerate()
     close->InsertNextPoint(1.0, 0.0, 0.0);
     tiny->SetPoints(close);
     vtkNew<vtkPointCloudGridLocator> grid;
+    grid->SetSearchStructure(structure);
     grid->SetDataSet(tiny);
     grid->BuildLocator();
     grid->FindNearestNeighbors(20, std::vector<vtkIdType>{ 0 }, table, &nearest);
@@ -478,15 +492,76 @@ void SpreadOutliers()
   Check(box[1] - box[0] < 10.0 && same, "spread outliers: the cube's box, exact nearest points");
 }
 
+// Three dense clusters (cube surfaces of 4,000 points each) a million times their size apart:
+// each falls into a handful of the grid's cells, so AUTO answers with the k-d tree, and the
+// answers are the brute force's (the 40 nearest of every 97th point, and a few far queries).
+void FarClusters()
+{
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const double offsets[3][3] = { { 0, 0, 0 }, { 1e6, 0, 0 }, { 3e5, 7e5, -2e5 } };
+  for (const auto& offset : offsets)
+  {
+    for (int i = 0; i < 4000; ++i)
+    {
+      double x[3] = { unit(random), unit(random), unit(random) };
+      x[i % 3] = (i / 3) % 2; // on a face of the unit cube
+      points->InsertNextPoint(x[0] + offset[0], x[1] + offset[1], x[2] + offset[2]);
+    }
+  }
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  vtkNew<vtkPointCloudGridLocator> grid;
+  grid->SetDataSet(data);
+  grid->BuildLocator();
+  const bool tree = grid->GetUsesTree();
+  std::vector<vtkIdType> ids;
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); i += 97)
+  {
+    ids.push_back(i);
+  }
+  std::vector<int32_t> table;
+  grid->FindNearestNeighbors(40, ids, table);
+  long mismatches = 0;
+  for (size_t r = 0; r < ids.size(); ++r)
+  {
+    const auto expected = BruteForce(points, points->GetPoint(ids[r]), ids[r]);
+    for (int j = 0; j < 40; ++j)
+    {
+      mismatches += table[r * 40 + j] == expected[j].second ? 0 : 1;
+    }
+  }
+  vtkNew<vtkIdList> found;
+  for (const double* x : { offsets[1], offsets[2] })
+  {
+    const double far[3] = { x[0] + 5e5, x[1] - 3e5, x[2] + 11.0 };
+    const auto expected = BruteForce(points, far);
+    grid->FindClosestNPoints(30, far, found);
+    for (int j = 0; j < 30; ++j)
+    {
+      mismatches += found->GetNumberOfIds() == 30 && found->GetId(j) == expected[j].second ? 0 : 1;
+    }
+  }
+  std::printf("far clusters: cell occupancy %.0f, %s, %ld mismatches with the brute force\n",
+    grid->GetCellOccupancy(), tree ? "k-d tree" : "grid", mismatches);
+  Check(tree && mismatches == 0, "far clusters: the k-d tree, exact nearest points");
+}
+
 int TestPointCloudGridLocator(int, char*[])
 {
-  for (const char* kind : { "volume", "sheet", "cluster", "lattice", "duplicates", "nan" })
+  for (int structure : { vtkPointCloudGridLocator::GRID, vtkPointCloudGridLocator::KD_TREE })
   {
-    CompareQueries(kind);
-    CompareBatched(kind);
+    for (const char* kind : { "volume", "sheet", "cluster", "lattice", "duplicates", "nan" })
+    {
+      CompareQueries(kind, structure);
+      CompareBatched(kind, structure);
+    }
+    Degenerate(structure);
   }
-  Degenerate();
   Representation();
   SpreadOutliers();
+  FarClusters();
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
