@@ -1104,9 +1104,11 @@ int main(int argc, char* argv[])
   if (wanted(7))
   {
     std::printf("\n7. Real-part situations, sigma = 0.25 s, default detector: P / R / F1 and the share of "
-                "the true\n   corner and border points typed so (target: F1 >= 0.90, typed >= 0.90)\n");
-    std::printf("%-26s %7s | %-22s| %-7s | %-7s\n", "case", "points", "P / R / F1", "corner",
-      "border");
+                "the true\n   corner and border points typed so (target: F1 >= 0.90, typed >= 0.90); "
+                "convexity: the share of the true\n   crease points typed convex or concave that are "
+                "typed as the truth (no target)\n");
+    std::printf("%-26s %7s | %-22s| %-7s | %-7s | %-9s\n", "case", "points", "P / R / F1", "corner",
+      "border", "convexity");
     std::vector<double> caseF1;
     // Floors where the figure is near the target, a little below the figure measured when they
     // were set; elsewhere the target itself.
@@ -1149,6 +1151,27 @@ int main(int argc, char* argv[])
         {
           std::printf(" %7s |", "-");
         }
+      }
+      // Convex or concave: told from normals pointing away from the cloud's centre.
+      double creases = 0.0, same = 0.0;
+      for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i)
+      {
+        const int want = static_cast<int>(truth->GetTuple1(i));
+        const int got = static_cast<int>(found->GetTuple1(i));
+        if ((want == vtkCreaseVotingFeatures::CONVEX || want == vtkCreaseVotingFeatures::CONCAVE) &&
+          (got == vtkCreaseVotingFeatures::CONVEX || got == vtkCreaseVotingFeatures::CONCAVE))
+        {
+          ++creases;
+          same += got == want;
+        }
+      }
+      if (creases > 0.0)
+      {
+        std::printf(" %9.3f |", same / creases);
+      }
+      else
+      {
+        std::printf(" %9s |", "-");
       }
       std::printf("\n");
     };
