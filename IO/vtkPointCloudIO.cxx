@@ -555,6 +555,66 @@ bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string
   return true;
 }
 
+// Why VTK's legacy reader failed on an ASCII file, where it says only "Error reading ascii
+// data": the first coordinate of the data set's POINTS that is no finite number (a "nan", an
+// "inf", a word), or the end of the file before the declared count. Empty when the file is not
+// ASCII or nothing of that kind is found (VTK's message then stands).
+std::string LegacyPointsProblem(const std::string& fileName)
+{
+  std::ifstream file(fileName, std::ios::binary);
+  std::string line;
+  long number = 0;
+  bool dataset = false;
+  long long count = -1;
+  while (count < 0 && std::getline(file, line))
+  {
+    ++number;
+    std::istringstream words(line);
+    std::string keyword, declared;
+    words >> keyword >> declared;
+    std::transform(keyword.begin(), keyword.end(), keyword.begin(),
+      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    if (number == 3 && keyword != "ASCII")
+    {
+      return {};
+    }
+    dataset = dataset || (number >= 4 && keyword == "DATASET");
+    if (dataset && keyword == "POINTS")
+    {
+      const auto parsed = std::from_chars(declared.data(), declared.data() + declared.size(), count);
+      if (parsed.ec != std::errc() || count < 0)
+      {
+        return {};
+      }
+    }
+  }
+  const long long values = 3 * std::max(count, 0LL);
+  long long read = 0;
+  while (read < values && std::getline(file, line))
+  {
+    ++number;
+    std::istringstream words(line);
+    for (std::string word; read < values && words >> word; ++read)
+    {
+      double value = 0.0;
+      const char* end = word.data() + word.size();
+      const auto parsed = std::from_chars(word.data() + (word[0] == '+' ? 1 : 0), end, value);
+      if (parsed.ec != std::errc() || parsed.ptr != end || !std::isfinite(value))
+      {
+        return fileName + ":" + std::to_string(number) + ": coordinate " +
+          std::to_string(read % 3 + 1) + " of point " + std::to_string(read / 3 + 1) + " ('" +
+          (word.size() > 40 ? word.substr(0, 40) + "..." : word) + "') is not a finite number";
+      }
+    }
+  }
+  if (count > 0 && read < values)
+  {
+    return fileName + ": the POINTS line declares " + std::to_string(count) +
+      " points; the file ends after " + std::to_string(read / 3) + " of them";
+  }
+  return {};
+}
+
 // The XML of a VTK XML file up to its "<AppendedData" tag (at most its first 64 MB where it has
 // none) into `head`; returns where that tag starts (npos: none).
 size_t ReadXMLHead(std::ifstream& in, std::string& head)
@@ -1283,6 +1343,12 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
   if (!updated || !message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const unsigned long code = reader->GetErrorCode();
+    const std::string legacy = extension == "vtk" ? LegacyPointsProblem(fileName) : std::string();
+    if (!legacy.empty())
+    {
+      error = legacy;
+      return nullptr;
+    }
     const bool ours = extension != "vtp" && extension != "vtu" && extension != "vtk";
     error = WithFile(fileName,
       !message.empty() ? (ours ? message : "cannot read: " + message)

@@ -504,6 +504,28 @@ struct TextParse
       this->Targets = TargetsFromHeader(names, this->Arrays, problem);
       if (this->Targets.empty())
       {
+        // Every field written like a number ("0x1p-1", "1,5" split wrong, "1e"): data with a
+        // field the reader cannot read, not a header.
+        const auto numeric = [](std::string_view f) {
+          size_t i = !f.empty() && (f[0] == '+' || f[0] == '-') ? 1 : 0;
+          i += i < f.size() && f[i] == '.' ? 1 : 0;
+          return i < f.size() && std::isdigit(static_cast<unsigned char>(f[i])) != 0;
+        };
+        if (std::all_of(this->Fields.begin(), this->Fields.end(), numeric))
+        {
+          for (size_t c = 0; c < this->Fields.size(); ++c)
+          {
+            if (!ParseNumber(this->Fields[c], value))
+            {
+              const std::string_view f = this->Fields[c];
+              const bool hex = f.find("0x") != std::string_view::npos ||
+                f.find("0X") != std::string_view::npos;
+              return this->Fail(vtkErrorCode::FileFormatError, number,
+                "field " + std::to_string(c + 1) + " ('" + Shorten(f) + "') is not a number" +
+                  (hex ? " (hexadecimal numbers are not read)" : ""));
+            }
+          }
+        }
         return this->Fail(vtkErrorCode::FileFormatError, number, problem);
       }
       this->ReferenceIsHeader = true;

@@ -157,6 +157,10 @@ int TestPointCloudText(int argc, char* argv[])
   }
   ExpectError(folder, "twocolumns.xyz", "1 2\n", "a point needs 3 coordinates");
   ExpectError(folder, "noxyz.csv", "a,b,c\n1,2,3\n", "names no x, y and z");
+  // A first line written like numbers is data with a bad field, not a header without x, y, z.
+  ExpectError(folder, "hex.xyz", "0x1p-1 0x1p-2 0x1p-3\n1 2 3\n",
+    ":1: field 1 ('0x1p-1') is not a number (hexadecimal numbers are not read)");
+  ExpectError(folder, "exponent.csv", "1e,2,3\n1,2,3\n", ":1: field 1 ('1e') is not a number");
   ExpectError(folder, "twice.csv", "x,y,z,a,b,a\n1,2,3,4,5,6\n",
     "the header names 'a' more than once (columns 4 and 6)");
   ExpectError(folder, "unnamed.csv", "x,y,z,,,w\n1,2,3,4,5,6\n",
