@@ -1359,10 +1359,20 @@ std::string FindNonFinite(vtkPolyData* result, vtkPointSet* cloud)
   return "";
 }
 
-// Whether two names are the same file (links and other paths to it included).
+// A name with its folder resolved (links, ".", "..", relative to the working folder), for files
+// that may not exist yet.
+std::string ResolvedName(const std::string& name)
+{
+  const std::string full = vtksys::SystemTools::CollapseFullPath(name);
+  return vtksys::SystemTools::GetRealPath(vtksys::SystemTools::GetFilenamePath(full)) + "/" +
+    vtksys::SystemTools::GetFilenameName(full);
+}
+
+// Whether two names are the same file (links and other paths to it included), also where
+// neither exists yet ("o.vtp" and "./o.vtp").
 bool SameFile(const std::string& a, const std::string& b)
 {
-  return a == b || vtksys::SystemTools::SameFile(a, b);
+  return a == b || vtksys::SystemTools::SameFile(a, b) || ResolvedName(a) == ResolvedName(b);
 }
 
 // The filter's first error, as one line.
@@ -1455,7 +1465,8 @@ private:
       Fail(ExitUsage, s.Screenshot + ": the picture cannot replace the input or the output");
     }
     if (!s.Lines.empty() &&
-      (SameFile(s.Lines, s.Input) || SameFile(s.Lines, s.Output) || s.Lines == s.Screenshot))
+      (SameFile(s.Lines, s.Input) || SameFile(s.Lines, s.Output) ||
+        (!s.Screenshot.empty() && SameFile(s.Lines, s.Screenshot))))
     {
       Fail(ExitUsage, s.Lines + ": the curves cannot replace the input, the output or the picture");
     }

@@ -601,6 +601,9 @@ int main(int argc, char* argv[])
       "is the input file; the input is never overwritten", "");
     Check(Slurp(vtp) == before, "the input is unchanged");
   }
+  // The curves and the output named by two spellings of one file that does not exist yet.
+  ExpectFailure("curves over the output", { vtp, Path("o15.vtp"), "--lines", Folder + "/./o15.vtp" },
+    2, "the curves cannot replace the input, the output or the picture", Path("o15.vtp"));
 
   // Bad input or failure: exit code 1.
   ExpectFailure("missing file", { Path("missing.ply"), Path("o9.vtp") }, 1,
