@@ -1918,7 +1918,10 @@ void CreaseRun::ChooseModels(float* gain, float* angle, vtkIdType begin, vtkIdTy
       f.Hinge = f.Cross;
     }
     this->Gain[r] = std::max(f.RSSQ - f.Hinge.RSS2, 0.0) / this->Variance;
-    gain[this->Ids[r]] = static_cast<float>(this->Gain[r]);
+    // In float, the largest float at most: a point far from the rest (1e27 from a part a few
+    // units wide) gains beyond float's range, and the array must hold a number.
+    gain[this->Ids[r]] = static_cast<float>(
+      std::min(this->Gain[r], static_cast<double>(std::numeric_limits<float>::max())));
     angle[this->Ids[r]] = f.Hinge.Angle;
   }
 }
