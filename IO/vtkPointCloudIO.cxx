@@ -875,6 +875,19 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
           std::to_string(size) + " bytes): the file is cut short";
         return false;
       }
+      // Blocks of no bytes, or a last block larger than the others: VTK's reader divides by the
+      // block size (a floating-point exception). 8-byte sizes read as 4-byte ones give a block
+      // size of 0 (the high word of the count).
+      if (blocks > 0 && (blockSize == 0 || lastSize > blockSize))
+      {
+        error = what + " declares " + std::to_string(blocks) + " compressed block(s) of " +
+          std::to_string(blockSize) + " bytes, the last of " + std::to_string(lastSize) +
+          ": a corrupt header" +
+          (headerBytes == 4 && blockSize == 0
+              ? std::string(" (or 8-byte sizes read as header_type UInt32, the default)")
+              : std::string());
+        return false;
+      }
       uint64_t compressed = 0, part = 0;
       bool inside = blocks <= size / headerBytes;
       for (uint64_t b = 0; inside && b < blocks; ++b)

@@ -333,6 +333,32 @@ void FuzzedFiles()
       "VERTICES 1000000000 2000000000\n1 0\n");
   ExpectFailure("legacy VTK declaring 10^9 cells", { Path("billion-cells.vtk"), Path("o.vtp") }, 1,
     "billion-cells.vtk: cannot read: VTK's vtkPolyDataReader failed without saying why", 10.0);
+  // A zlib-compressed VTP whose first block header declares blocks of 0 bytes: VTK's reader
+  // divides by it (a floating-point exception in its child process); refused with the array named.
+  {
+    vtkNew<vtkFeatureModelSource> part;
+    part->SetNumberOfPoints(1500);
+    vtkNew<vtkXMLPolyDataWriter> zlib;
+    zlib->SetInputConnection(part->GetOutputPort());
+    zlib->SetFileName(Path("zlib.vtp").c_str());
+    zlib->SetDataModeToAppended();
+    zlib->EncodeAppendedDataOff();
+    zlib->SetHeaderTypeToUInt32();
+    zlib->Write();
+    ExpectSuccess("a zlib-compressed VTP", { Path("zlib.vtp"), Path("zlib.csv"), "--quiet" });
+    std::string zero = Slurp(Path("zlib.vtp"));
+    const size_t data = zero.find("<AppendedData encoding=\"raw\">");
+    const size_t underscore = data == std::string::npos ? data : zero.find('_', data);
+    Check(underscore != std::string::npos, "zlib.vtp: no raw appended data");
+    if (underscore != std::string::npos)
+    {
+      // The first array's header (offset 0): blocks, block size, last block's size, ...
+      std::fill_n(zero.begin() + static_cast<std::ptrdiff_t>(underscore + 1 + 4), 4, '\0');
+      Spit(Path("zlib-zero.vtp"), zero);
+      ExpectFailure("a zlib VTP declaring blocks of 0 bytes", { Path("zlib-zero.vtp"), Path("o.csv") },
+        1, "at appended offset 0 declares 1 compressed block(s) of 0 bytes");
+    }
+  }
   // A VTP with raw appended data cut short: VTK's reader fills the missing points with zeros and
   // says nothing; the command refuses it.
   {
