@@ -26,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <set>
@@ -355,6 +356,10 @@ public:
   std::vector<double> Scores; // per feature point: the detector's score (KeepRidges)
   std::vector<V3> TracePoints;
   std::vector<vtkIdType> TraceIndex; // index in Points of each trace point
+  // Points at the position of a point already selected (exact copies, the same mask): input id
+  // and the index in Points of that point. A copy adds no shape, and a stack of thousands made
+  // every search around it return them all (the time grew with the square of the copies).
+  std::vector<std::pair<vtkIdType, vtkIdType>> Copies;
   PointSearch AllSearch, TraceSearch;
 
 private:
@@ -426,6 +431,16 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
   vtkDataArray* normals, vtkDataArray* scores, double threshold)
 {
   const vtkIdType n = input->GetNumberOfPoints();
+  // Selected positions and masks, by their bits, for the copies.
+  struct PositionHash
+  {
+    size_t operator()(const std::array<uint64_t, 4>& k) const
+    {
+      return std::hash<uint64_t>()(k[0] * 0x9E3779B97F4A7C15ull ^ k[1] * 0xC2B2AE3D27D4EB4Full ^
+        k[2] * 0x165667B19E3779F9ull ^ k[3]);
+    }
+  };
+  std::unordered_map<std::array<uint64_t, 4>, vtkIdType, PositionHash> selected;
   for (vtkIdType i = 0; i < n; ++i)
   {
     V3 x;
@@ -435,6 +450,18 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
       continue;
     }
     const bool feature = mask->GetTuple1(i) != 0.0;
+    std::array<uint64_t, 4> key = { 0, 0, 0, feature ? 1u : 0u };
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = x[c] == 0.0 ? 0.0 : x[c]; // -0 and 0 are one position
+      std::memcpy(&key[c], &v, sizeof(double));
+    }
+    const auto found = selected.emplace(key, static_cast<vtkIdType>(this->Points.size()));
+    if (!found.second)
+    {
+      this->Copies.emplace_back(i, found.first->second);
+      continue;
+    }
     unsigned char type = feature ? CONVEX : NONE;
     if (feature && types)
     {
@@ -2677,6 +2704,10 @@ int vtkFeatureCurveExtraction::RequestData(
       angleSum[c] += angle;
       ++angleCount[c];
     }
+  }
+  for (const auto& copy : run.Copies)
+  {
+    curveIds->SetValue(copy.first, curveIds->GetValue(run.PointIds[copy.second]));
   }
   for (size_t c = 0; c < curves.size(); ++c)
   {
