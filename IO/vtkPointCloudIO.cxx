@@ -305,35 +305,87 @@ vtkSmartPointer<vtkPolyData> AsPolyData(vtkPointSet* data)
 // that a quote, '<' or '&' in a name (from a CSV header, say) makes the file unreadable, and an
 // empty name is refused when read back. Entities are decoded by the reader: the name comes back
 // as it was; an empty one comes back as "unnamed" (as the PLY and PCD writers name it).
-std::string XMLName(const char* name)
+// An array name as valid UTF-8 (a byte that starts no valid sequence, as from a Windows-1252
+// header, is taken as Latin-1: 0xE9 is 'é') with control characters other than tab, newline and
+// carriage return as '_', cut so that its `cost` (bytes as the file stores them) stays within
+// 240: VTK's readers keep names in 256-byte buffers ("Unsupported data type" beyond), and a
+// suffix "_2", ... may follow. An empty name is "unnamed".
+std::string FitName(const char* name, const std::function<size_t(const std::string&)>& cost)
 {
   if (!name || !*name)
   {
     return "unnamed";
   }
   std::string out;
-  for (const char* c = name; *c; ++c)
+  size_t spent = 0;
+  const auto* c = reinterpret_cast<const unsigned char*>(name);
+  while (*c)
   {
-    switch (*c)
+    // The next character, as UTF-8.
+    std::string ch;
+    int length = *c < 0x80 ? 1 : (*c >> 5) == 6 ? 2 : (*c >> 4) == 14 ? 3 : (*c >> 3) == 30 ? 4 : 0;
+    for (int k = 1; k < length; ++k)
+    {
+      length = (c[k] & 0xC0) == 0x80 ? length : 0;
+    }
+    if (length == 0)
+    {
+      ch = { static_cast<char>(0xC0 | (*c >> 6)), static_cast<char>(0x80 | (*c & 0x3F)) };
+      length = 1;
+    }
+    else if (*c < 0x20 && *c != '\t' && *c != '\n' && *c != '\r')
+    {
+      ch = "_";
+    }
+    else
+    {
+      ch.assign(reinterpret_cast<const char*>(c), static_cast<size_t>(length));
+    }
+    const size_t more = cost(ch);
+    if (spent + more > 240)
+    {
+      break;
+    }
+    spent += more;
+    out += ch;
+    c += length;
+  }
+  return out;
+}
+
+// An array name for VTK's XML writers (VTK 9.1 writes names as they are): FitName(), then
+// quotes, '<', '>', '&' and apostrophes as XML entities (the XML readers give them back).
+std::string XMLName(const char* name)
+{
+  const std::string fitted = FitName(name, [](const std::string& ch) { return ch.size(); });
+  std::string out;
+  for (const char c : fitted)
+  {
+    switch (c)
     {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
       case '\'': out += "&apos;"; break;
-      default:
-        // Control characters other than tab, newline and carriage return have no place in XML.
-        if (static_cast<unsigned char>(*c) < 0x20 && *c != '\t' && *c != '\n' && *c != '\r')
-        {
-          out += '_';
-        }
-        else
-        {
-          out += *c;
-        }
+      default: out += c;
     }
   }
   return out;
+}
+
+// An array name for VTK's legacy writer, which writes a byte other than a letter, a digit and
+// a few marks as "%XX" (three bytes in the file): FitName() at that cost.
+std::string LegacyName(const char* name)
+{
+  return FitName(name, [](const std::string& ch) {
+    size_t bytes = 0;
+    for (const char c : ch)
+    {
+      bytes += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' ? 1 : 3;
+    }
+    return bytes;
+  });
 }
 
 
@@ -679,6 +731,20 @@ bool CheckDeclaredSizes(const std::string& fileName, double fileSize, std::strin
   const double capacity = 1032.0 * fileSize;
   for (const auto& [tag, array] : DataArrayTags(head, end))
   {
+    // VTK's XML reader keeps names in 256-byte buffers ("Unsupported data type" beyond).
+    const std::string longName = TagAttribute(array, "Name");
+    size_t decoded = longName.size(); // an entity ("&amp;") is one byte once read
+    for (size_t amp = longName.find('&'); amp != std::string::npos; amp = longName.find('&', amp + 1))
+    {
+      const size_t semicolon = longName.find(';', amp);
+      decoded -= semicolon != std::string::npos && semicolon - amp <= 10 ? semicolon - amp : 0;
+    }
+    if (decoded > 255)
+    {
+      error = fileName + ": an array's name is " + std::to_string(decoded) +
+        " bytes long ('" + longName.substr(0, 24) + "...'): VTK's reader reads at most 255";
+      return false;
+    }
     const std::string text = TagAttribute(array, "NumberOfComponents");
     if (text.empty())
     {
@@ -1665,7 +1731,11 @@ void vtkPointCloudIO::ReleaseTemporaryFile(const std::string& temporary)
   }
 }
 
-vtkSmartPointer<vtkPolyData> vtkPointCloudIO::WithXMLNames(vtkPolyData* poly)
+namespace
+{
+// `poly` with every array renamed by `rename` (see WithXMLNames()).
+vtkSmartPointer<vtkPolyData> WithNames(
+  vtkPolyData* poly, const std::function<std::string(const char*)>& rename)
 {
   vtkFieldData* sources[3] = { poly->GetPointData(), poly->GetCellData(), poly->GetFieldData() };
   bool needed = false;
@@ -1674,7 +1744,7 @@ vtkSmartPointer<vtkPolyData> vtkPointCloudIO::WithXMLNames(vtkPolyData* poly)
     for (int i = 0; i < fd->GetNumberOfArrays() && !needed; ++i)
     {
       const char* name = fd->GetAbstractArray(i) ? fd->GetAbstractArray(i)->GetName() : "";
-      needed = XMLName(name) != (name ? name : "");
+      needed = rename(name) != (name ? name : "");
     }
   }
   if (!needed)
@@ -1693,7 +1763,7 @@ vtkSmartPointer<vtkPolyData> vtkPointCloudIO::WithXMLNames(vtkPolyData* poly)
     for (int i = 0; i < from->GetNumberOfArrays(); ++i)
     {
       vtkAbstractArray* a = from->GetAbstractArray(i);
-      std::string name = XMLName(a->GetName());
+      std::string name = rename(a->GetName());
       // AddArray replaces an array of the same name: a renamed one that meets another gets
       // "_2", "_3", ...
       const std::string base = name;
@@ -1726,6 +1796,12 @@ vtkSmartPointer<vtkPolyData> vtkPointCloudIO::WithXMLNames(vtkPolyData* poly)
     }
   }
   return copy;
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> vtkPointCloudIO::WithXMLNames(vtkPolyData* poly)
+{
+  return WithNames(poly, XMLName);
 }
 
 namespace
@@ -1810,7 +1886,7 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
   else if (extension == "vtk")
   {
     auto w = vtkSmartPointer<vtkPolyDataWriter>::New();
-    w->SetInputData(AsPolyData(data));
+    w->SetInputData(WithNames(AsPolyData(data), LegacyName));
     w->SetFileName(temporary.c_str());
     w->SetFileTypeToBinary();
     writer = w;

@@ -145,7 +145,8 @@ public:
    * `poly` with its arrays' names made fit for VTK's XML writers (VTK 9.1 writes names as they
    * are): quotes, '<', '>', '&' and apostrophes as XML entities (the XML readers give the names
    * back as they were), an empty name as "unnamed" (then "unnamed_2", ... where taken), control
-   * characters as '_'. `poly` itself when every name already is; else a shallow copy whose
+   * characters as '_', bytes that are not UTF-8 as Latin-1 characters (XML must be UTF-8), and
+   * names cut to 240 bytes (VTK's readers keep at most 255; .vtk outputs are cut alike). `poly` itself when every name already is; else a shallow copy whose
    * renamed arrays share the originals' values (the caller's arrays keep their names). Write()
    * applies it to .vtp outputs; C++ only.
    */
