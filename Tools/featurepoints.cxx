@@ -10,6 +10,7 @@
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCurvatureDensityFeatures.h"
@@ -1777,6 +1778,7 @@ private:
     this->Filter->SetOutputFeaturesOnly(false); // the picture needs every point; see WriteFiles
     // Read by pieces: the whole cloud's extent needs no scaled frame (see ReadPiece).
     const int exponent = this->ByPieces ? 0 : ScaledFrameExponent(this->Cloud);
+    this->Exponent = exponent;
     if (exponent != 0)
     {
       LengthUnit = std::ldexp(1.0, -exponent);
@@ -1887,11 +1889,55 @@ private:
     }
     this->Meter->Stage("curves");
     const auto start = Clock::now();
-    this->Curves->SetInputData(this->Result);
-    this->Curves->Update();
+    if (this->Exponent == 0)
+    {
+      this->Curves->SetInputData(this->Result);
+      this->Curves->Update();
+      this->Result = this->Curves->GetOutput();
+    }
+    else
+    {
+      // A cloud the method ran on scaled (see ScaledFrameExponent): the curves too, on the result
+      // scaled the same way (its mean spacing with it), then the curves back in the input's
+      // units; the result gets their CurveId.
+      vtkSmartPointer<vtkPolyData> scaled = ScaledFrame(this->Result, this->Exponent);
+      scaled->GetFieldData()->ShallowCopy(this->Result->GetFieldData());
+      if (vtkDataArray* spacing = this->Result->GetFieldData()->GetArray("MeanSpacing"))
+      {
+        vtkSmartPointer<vtkDataArray> inFrame = vtk::TakeSmartPointer(spacing->NewInstance());
+        inFrame->DeepCopy(spacing);
+        inFrame->SetTuple1(0, std::ldexp(spacing->GetTuple1(0), this->Exponent));
+        scaled->GetFieldData()->AddArray(inFrame);
+      }
+      this->Curves->SetInputData(scaled);
+      this->Curves->Update();
+      this->Result->GetPointData()->AddArray(
+        this->Curves->GetOutput()->GetPointData()->GetArray("CurveId"));
+      vtkPolyData* curves = this->Curves->GetCurves();
+      vtkNew<vtkPoints> points;
+      points->SetDataTypeToDouble();
+      points->SetNumberOfPoints(curves->GetNumberOfPoints());
+      double x[3];
+      for (vtkIdType i = 0; i < curves->GetNumberOfPoints(); ++i)
+      {
+        curves->GetPoint(i, x);
+        for (double& c : x)
+        {
+          c = std::ldexp(c, -this->Exponent);
+        }
+        points->SetPoint(i, x);
+      }
+      curves->SetPoints(points);
+      if (vtkDataArray* length = curves->GetCellData()->GetArray("Length"))
+      {
+        for (vtkIdType c = 0; c < length->GetNumberOfTuples(); ++c)
+        {
+          length->SetTuple1(c, std::ldexp(length->GetTuple1(c), -this->Exponent));
+        }
+      }
+    }
     this->Meter->Finish();
     this->Times.emplace_back("curves", Seconds(start));
-    this->Result = this->Curves->GetOutput();
   }
 
   // --screenshot: the picture, into a temporary file that WriteFiles renames once the output is
@@ -2046,7 +2092,8 @@ private:
     if (!s.Lines.empty())
     {
       std::printf("curves      %lld, total length %.6g (%s)\n",
-        static_cast<long long>(this->Curves->GetNumberOfCurves()), this->Curves->GetTotalLength(),
+        static_cast<long long>(this->Curves->GetNumberOfCurves()),
+        std::ldexp(this->Curves->GetTotalLength(), -this->Exponent),
         s.Lines.c_str());
     }
     if (!s.Screenshot.empty())
@@ -2101,6 +2148,7 @@ private:
   vtkSmartPointer<vtkDistributedFeaturePoints> Driver;
 #endif
   vtkPolyData* Result = nullptr;
+  int Exponent = 0; // the scaled frame's power of two (see ScaledFrameExponent), 0: none
   double Grown = std::nan(""); // see Method::GrowThreshold
   vtkNew<vtkFeatureCurveExtraction> Curves;
   std::string PictureFile;

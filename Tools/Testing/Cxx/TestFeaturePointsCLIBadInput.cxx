@@ -679,6 +679,31 @@ void ExtremeScales()
       }
     }
   }
+  // The curves in the scaled frame too: 2^700 (exact) gives the unit cloud's curves, their
+  // lengths 2^700 times (the curves used to run on the input's coordinates: none found).
+  const Run unitLines = ExpectSuccess("unit cloud, curves",
+    { Path("unit.xyz"), Path("unit.vtp"), "--lines", Path("unit-lines.vtp") });
+  const Run bigLines = ExpectSuccess("2^700 cloud, curves",
+    { Path("big.xyz"), Path("big.vtp"), "--lines", Path("big-lines.vtp") });
+  auto curvesOf = [](const std::string& out, double& length) {
+    const size_t at = out.find("curves      ");
+    long long count = -1;
+    length = 0.0;
+    if (at != std::string::npos)
+    {
+      std::sscanf(out.c_str() + at, "curves %lld, total length %lf", &count, &length);
+    }
+    return count;
+  };
+  double unitLength = 0.0, bigLength = 0.0;
+  const long long unitCurves = curvesOf(unitLines.Out, unitLength);
+  const long long bigCurves = curvesOf(bigLines.Out, bigLength);
+  Check(unitCurves > 0 && bigCurves == unitCurves &&
+      std::abs(std::ldexp(bigLength, -700) / unitLength - 1.0) < 1e-5,
+    "2^700 cloud: " + std::to_string(bigCurves) + " curves, the unit cloud " +
+      std::to_string(unitCurves));
+  ::unlink(Path("unit-lines.vtp").c_str());
+  ::unlink(Path("big-lines.vtp").c_str());
   // One point at 1e30 among 20,000 on a slab: not "a straight line".
   std::mt19937 rng(8);
   std::uniform_real_distribution<double> u(0.0, 1.0);
