@@ -194,9 +194,17 @@ std::vector<ColumnTarget> TargetsFromHeader(
     {
       name.erase(0, 1);
     }
-    if ((name == "x" || name == "y" || name == "z") && coordinateColumn[name[0] - 'x'] < 0)
+    if (name == "x" || name == "y" || name == "z")
     {
-      coordinateColumn[name[0] - 'x'] = static_cast<int>(c);
+      int& column = coordinateColumn[name[0] - 'x'];
+      if (column >= 0)
+      {
+        // Which of them holds the coordinate is anyone's guess.
+        problem = "the header names the coordinate '" + name + "' more than once (columns " +
+          std::to_string(column + 1) + " and " + std::to_string(c + 1) + ")";
+        return {};
+      }
+      column = static_cast<int>(c);
       targets[c].Coordinate = name[0] - 'x';
     }
   }

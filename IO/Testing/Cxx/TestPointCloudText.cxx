@@ -157,6 +157,8 @@ int TestPointCloudText(int argc, char* argv[])
   }
   ExpectError(folder, "twocolumns.xyz", "1 2\n", "a point needs 3 coordinates");
   ExpectError(folder, "noxyz.csv", "a,b,c\n1,2,3\n", "names no x, y and z");
+  ExpectError(folder, "twox.csv", "x,y,z,X\n1,2,3,4\n",
+    ":1: the header names the coordinate 'x' more than once (columns 1 and 4)");
   // A first line written like numbers is data with a bad field, not a header without x, y, z.
   ExpectError(folder, "hex.xyz", "0x1p-1 0x1p-2 0x1p-3\n1 2 3\n",
     ":1: field 1 ('0x1p-1') is not a number (hexadecimal numbers are not read)");
