@@ -211,18 +211,31 @@ void vtkPointCloudTextWriter::WriteData()
     buffer += '\n';
     if (buffer.size() > (1 << 22))
     {
+      errno = 0;
       ok = std::fwrite(buffer.data(), 1, buffer.size(), out) == buffer.size();
       buffer.clear();
       this->UpdateProgress(static_cast<double>(i) / n);
     }
   }
-  ok = ok && std::fwrite(buffer.data(), 1, buffer.size(), out) == buffer.size();
-  const int error = errno;
-  ok = (std::fclose(out) == 0) && ok;
+  // The error of the first call that failed (errno is stale where none set it: an earlier,
+  // unrelated call's); the buffered bytes may fail only at fclose.
+  int error = ok ? 0 : errno;
+  if (ok)
+  {
+    errno = 0;
+    ok = std::fwrite(buffer.data(), 1, buffer.size(), out) == buffer.size();
+    error = ok ? 0 : errno;
+  }
+  errno = 0;
+  if (std::fclose(out) != 0 && ok)
+  {
+    ok = false;
+    error = errno;
+  }
   if (!ok)
   {
     fail(vtkErrorCode::OutOfDiskSpaceError,
-      std::string("write failed: ") + std::strerror(error ? error : errno));
+      std::string("write failed: ") + (error ? std::strerror(error) : "the disk may be full"));
   }
 }
 
