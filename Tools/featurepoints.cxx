@@ -131,7 +131,8 @@ const std::vector<Method>& Methods()
       "the default: two-plane crease fits and a neighbourhood vote; score CreaseVotes, the "
       "fraction of the neighbourhood whose fitted crease line passes near the point; a feature "
       "point has a majority (> 0.5), then the features grow through points above "
-      "--grow-threshold plus the cloud's median vote, and open borders join them; array "
+      "--grow-threshold plus the cloud's median vote, and the points no fit explains "
+      "(details finer than the smallest scale, corners) and open borders join them; array "
       "FeatureType: 1 convex crease, 2 concave crease, 3 corner, 4 border, 0 no feature",
       [] { return vtkSmartPointer<vtkCreaseVotingFeatures>::New(); },
       [](vtkFeaturePointDetector* f) {
@@ -2076,7 +2077,8 @@ private:
       std::isnan(this->Grown) ? ""
                               : (", then grown along the features through " +
                                   std::string(filter->GetScoreArrayName()) + " > " +
-                                  FormatNumber(this->Grown))
+                                  FormatNumber(this->Grown) +
+                                  "; unexplained details and borders join")
                                   .c_str());
     std::printf("candidates  %lld of %lld points scored\n",
       static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n));
