@@ -886,13 +886,23 @@ struct Settings
   int Threads = 0;
 };
 
-bool ParseNumber(const std::string& text, double& value)
+// `text` as a finite double, blanks around it allowed (strtod skips the leading ones only);
+// `outOfRange`, when given, tells a number beyond a double's range or precision (1e309, 5e-324,
+// inf) from no number at all.
+bool ParseNumber(const std::string& text, double& value, bool* outOfRange = nullptr)
 {
+  const size_t first = text.find_first_not_of(" \t");
+  const size_t last = text.find_last_not_of(" \t");
+  const std::string trimmed = first == std::string::npos ? "" : text.substr(first, last - first + 1);
   char* end = nullptr;
   errno = 0;
-  value = std::strtod(text.c_str(), &end);
-  return !text.empty() && end == text.c_str() + text.size() && errno == 0 &&
-    std::isfinite(value);
+  value = std::strtod(trimmed.c_str(), &end);
+  const bool whole = !trimmed.empty() && end == trimmed.c_str() + trimmed.size();
+  if (outOfRange)
+  {
+    *outOfRange = whole && (errno == ERANGE || !std::isfinite(value)) && !std::isnan(value);
+  }
+  return whole && errno == 0 && std::isfinite(value);
 }
 
 // The command line as it is read: the arguments, the position, and the option at that position
@@ -1071,9 +1081,14 @@ void ReadFilterOption(const FilterOption& o, CommandLine& line, Settings& s)
     }
     number = k->second;
   }
-  else if (!ParseNumber(v, number))
+  else if (bool outOfRange = false; !ParseNumber(v, number, &outOfRange))
   {
-    Fail(ExitUsage, "--" + name + " takes a number; got '" + v + "'");
+    Fail(ExitUsage,
+      "--" + name +
+        (outOfRange ? " takes a finite number within a double's range and precision (about "
+                      "2.2e-308 to 1.8e308); got '"
+                    : " takes a number; got '") +
+        v + "'");
   }
   else if ((number < o.Min && o.Min > -1e299) || (number > o.Max && o.Max < 1e299) ||
     (o.Integer && number != std::floor(number)))
