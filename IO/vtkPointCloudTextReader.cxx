@@ -758,6 +758,15 @@ int vtkPointCloudTextReader::RequestData(
     {
       line.remove_prefix(3); // a UTF-8 byte order mark
     }
+    // UTF-16 (a byte order mark, or a NUL in every other byte of plain text): each character
+    // would read as two, the second a NUL.
+    if (lineNumber == 1 &&
+      (line.substr(0, 2) == "\xFF\xFE" || line.substr(0, 2) == "\xFE\xFF" ||
+        (line.size() >= 4 && (line[1] == '\0' || line[0] == '\0'))))
+    {
+      return fail(Problem{ vtkErrorCode::FileFormatError, lineNumber,
+        "the file is UTF-16 text; save it as UTF-8 or ASCII (iconv -f UTF-16 -t UTF-8)" });
+    }
     if (!line.empty() && line.back() == '\r')
     {
       line.remove_suffix(1);

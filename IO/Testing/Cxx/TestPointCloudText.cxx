@@ -157,6 +157,8 @@ int TestPointCloudText(int argc, char* argv[])
   }
   ExpectError(folder, "twocolumns.xyz", "1 2\n", "a point needs 3 coordinates");
   ExpectError(folder, "noxyz.csv", "a,b,c\n1,2,3\n", "names no x, y and z");
+  ExpectError(folder, "utf16.csv", std::string("\xFF\xFEx\0,\0y\0,\0z\0\n\0", 14),
+    ":1: the file is UTF-16 text");
   ExpectError(folder, "twox.csv", "x,y,z,X\n1,2,3,4\n",
     ":1: the header names the coordinate 'x' more than once (columns 1 and 4)");
   // A first line written like numbers is data with a bad field, not a header without x, y, z.
