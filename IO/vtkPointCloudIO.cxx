@@ -1678,7 +1678,27 @@ std::string vtkPointCloudIO::WriteTarget(const std::string& fileName)
   }
   std::string error;
   const std::string real = vtksys::SystemTools::GetRealPath(fileName, &error);
-  return real.empty() || !error.empty() ? fileName : real;
+  if (!real.empty() && error.empty())
+  {
+    return real;
+  }
+  // A link to a file not there yet (a dangling link): written through too, as a link to an
+  // existing file is, at the end of its chain (relative targets from the link's folder; at
+  // most 40 links, as the kernel follows).
+  std::string target = fileName;
+  for (int hop = 0; hop < 40 && ::lstat(target.c_str(), &info) == 0 && S_ISLNK(info.st_mode); ++hop)
+  {
+    std::vector<char> buffer(static_cast<size_t>(info.st_size > 0 ? info.st_size : 4096) + 1);
+    const ssize_t length = ::readlink(target.c_str(), buffer.data(), buffer.size() - 1);
+    if (length <= 0)
+    {
+      return fileName;
+    }
+    const std::string next(buffer.data(), static_cast<size_t>(length));
+    const size_t slash = target.find_last_of('/');
+    target = next[0] == '/' || slash == std::string::npos ? next : target.substr(0, slash + 1) + next;
+  }
+  return ::lstat(target.c_str(), &info) != 0 ? target : fileName;
 }
 
 std::string vtkPointCloudIO::CreateTemporaryFile(

@@ -516,6 +516,14 @@ void FuzzedFiles()
     "an output through a link: the link was replaced");
   Check(Slurp(Path("linked/target.csv")).compare(0, 6, "x,y,z,") == 0,
     "an output through a link: the target was not written");
+  // A link to a file not there yet: written through as well (it was replaced by a file).
+  ::unlink(Path("dangling.csv").c_str());
+  ::unlink(Path("linked/new.csv").c_str());
+  Check(::symlink("linked/new.csv", Path("dangling.csv").c_str()) == 0, "cannot make dangling.csv");
+  ExpectSuccess("an output through a dangling link", { Path("names.csv"), Path("dangling.csv"), "--quiet" });
+  Check(::lstat(Path("dangling.csv").c_str(), &link) == 0 && S_ISLNK(link.st_mode) &&
+      Slurp(Path("linked/new.csv")).compare(0, 6, "x,y,z,") == 0,
+    "an output through a dangling link: the link was replaced or its target not written");
 }
 
 void CoincidentPoints()
