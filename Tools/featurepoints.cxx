@@ -883,6 +883,7 @@ struct Settings
   std::vector<std::pair<const FilterOption*, double>> FilterValues;
   bool FeaturesOnly = false;
   int Width = 1200, Height = 900;
+  bool SizeGiven = false; // --size: only with --screenshot
   int Threads = 0;
 };
 
@@ -974,6 +975,7 @@ void ReadPictureSize(const std::string& v, Settings& s)
   }
   s.Width = w;
   s.Height = h;
+  s.SizeGiven = true;
 }
 
 // The options that are not the methods': each reads what it needs from the command line into
@@ -1480,6 +1482,10 @@ private:
       (SameFile(s.Screenshot, s.Input) || SameFile(s.Screenshot, s.Output)))
     {
       Fail(ExitUsage, s.Screenshot + ": the picture cannot replace the input or the output");
+    }
+    if (s.SizeGiven && s.Screenshot.empty())
+    {
+      Fail(ExitUsage, "--size sets the size of the picture: it needs --screenshot FILE.png");
     }
     if (!s.Lines.empty() &&
       (SameFile(s.Lines, s.Input) || SameFile(s.Lines, s.Output) ||

@@ -566,6 +566,8 @@ int main(int argc, char* argv[])
     "--alpha 1.5 is out of range", Path("o2.vtp"));
   ExpectFailure("non-numeric parameter", { vtp, Path("o3.vtp"), "--normal-k", "ten" }, 2,
     "--normal-k takes a number", Path("o3.vtp"));
+  ExpectFailure("picture size without a picture", { vtp, Path("o3.vtp"), "--size", "640x480" }, 2,
+    "--size sets the size of the picture: it needs --screenshot FILE.png", Path("o3.vtp"));
   ExpectFailure("number beyond a double", { vtp, Path("o3.vtp"), "--threshold", "1e309" }, 2,
     "--threshold takes a finite number within a double's range and precision", Path("o3.vtp"));
   ExpectFailure("fractional count", { vtp, Path("o4.vtp"), "--method", "huang2023", "--ssi-k", "2.5" }, 2,
