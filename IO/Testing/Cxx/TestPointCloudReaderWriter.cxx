@@ -20,6 +20,7 @@
 
 #include <sys/stat.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -78,6 +79,42 @@ vtkNew<vtkPolyData> MakeCloud()
   return cloud;
 }
 } // namespace
+
+// Two arrays named `names` (values i and 2 i) added to `cloud`, written to `file` and read back:
+// found there as `expected`, the values intact, the caller's arrays keeping their names.
+void NamesRoundTrip(vtkPolyData* cloud, const std::string& file,
+  const std::array<std::string, 2>& names, const std::array<std::string, 2>& expected,
+  const std::string& what)
+{
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  vtkNew<vtkPolyData> named;
+  named->ShallowCopy(cloud);
+  vtkNew<vtkFloatArray> arrays[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    arrays[k]->SetName(names[k].c_str());
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      arrays[k]->InsertNextValue(static_cast<float>((k + 1) * i));
+    }
+    named->GetPointData()->AddArray(arrays[k]);
+  }
+  vtkNew<vtkPointCloudWriter> writer;
+  writer->SetInputData(named);
+  writer->SetFileName(file.c_str());
+  vtkNew<vtkPointCloudReader> reader;
+  reader->SetFileName(file.c_str());
+  const bool written = writer->Write() == 1;
+  reader->Update();
+  bool same = written && reader->GetErrorMessage().empty();
+  for (int k = 0; k < 2 && same; ++k)
+  {
+    vtkDataArray* back = reader->GetOutput()->GetPointData()->GetArray(expected[k].c_str());
+    same = back && back->GetTuple1(n - 1) == (k + 1) * (n - 1) && arrays[k]->GetName() == names[k];
+  }
+  Check(same, what + ": '" + reader->GetErrorMessage() + "'");
+  std::remove(file.c_str());
+}
 
 int TestPointCloudReaderWriter(int argc, char* argv[])
 {
@@ -138,67 +175,16 @@ int TestPointCloudReaderWriter(int argc, char* argv[])
 
   // Array names that XML does not take as they are: written escaped, read back as they were (an
   // empty one as "unnamed"); the caller's arrays keep their names.
-  {
-    vtkNew<vtkPolyData> named;
-    named->ShallowCopy(cloud);
-    vtkNew<vtkFloatArray> special, empty;
-    special->SetName("a\"b<c>&'d");
-    empty->SetName("");
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      special->InsertNextValue(static_cast<float>(i));
-      empty->InsertNextValue(static_cast<float>(2 * i));
-    }
-    named->GetPointData()->AddArray(special);
-    named->GetPointData()->AddArray(empty);
-    const std::string file = folder + "/names.vtp";
-    vtkNew<vtkPointCloudWriter> writer;
-    writer->SetInputData(named);
-    writer->SetFileName(file.c_str());
-    vtkNew<vtkPointCloudReader> reader;
-    reader->SetFileName(file.c_str());
-    const bool written = writer->Write() == 1;
-    reader->Update();
-    vtkDataArray* a = reader->GetOutput()->GetPointData()->GetArray("a\"b<c>&'d");
-    vtkDataArray* b = reader->GetOutput()->GetPointData()->GetArray("unnamed");
-    Check(written && reader->GetErrorMessage().empty() && a && b && a->GetTuple1(n - 1) == n - 1 &&
-        b->GetTuple1(n - 1) == 2 * (n - 1) && std::string(special->GetName()) == "a\"b<c>&'d" &&
-        std::string(empty->GetName()).empty(),
-      "vtp: array names with XML's special characters: '" + reader->GetErrorMessage() + "'");
-    std::remove(file.c_str());
-  }
-
+  NamesRoundTrip(cloud, folder + "/names.vtp", { "a\"b<c>&'d", "" }, { "a\"b<c>&'d", "unnamed" },
+    "vtp: array names with XML's special characters");
   // Names VTK's readers cannot take back as they are: a Windows-1252 byte (not UTF-8: the XML
   // did not parse) and 300 bytes (past the readers' 256-byte buffers). Written as UTF-8 (the
   // byte as Latin-1) and cut to 240 bytes, in .vtp and .vtk: both read back.
   for (const std::string extension : { "vtp", "vtk" })
   {
-    vtkNew<vtkPolyData> named;
-    named->ShallowCopy(cloud);
-    vtkNew<vtkFloatArray> latin, wide;
-    latin->SetName("Temp\xE9rature");
-    wide->SetName(std::string(300, 'w').c_str());
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      latin->InsertNextValue(static_cast<float>(i));
-      wide->InsertNextValue(static_cast<float>(3 * i));
-    }
-    named->GetPointData()->AddArray(latin);
-    named->GetPointData()->AddArray(wide);
-    const std::string file = folder + "/encoded." + extension;
-    vtkNew<vtkPointCloudWriter> writer;
-    writer->SetInputData(named);
-    writer->SetFileName(file.c_str());
-    vtkNew<vtkPointCloudReader> reader;
-    reader->SetFileName(file.c_str());
-    const bool written = writer->Write() == 1;
-    reader->Update();
-    vtkDataArray* a = reader->GetOutput()->GetPointData()->GetArray("Temp\xC3\xA9rature");
-    vtkDataArray* b = reader->GetOutput()->GetPointData()->GetArray(std::string(240, 'w').c_str());
-    Check(written && reader->GetErrorMessage().empty() && a && b && a->GetTuple1(n - 1) == n - 1 &&
-        b->GetTuple1(n - 1) == 3 * (n - 1) && std::string(wide->GetName()).size() == 300,
-      extension + ": a Latin-1 name and a 300-byte name: '" + reader->GetErrorMessage() + "'");
-    std::remove(file.c_str());
+    NamesRoundTrip(cloud, folder + "/encoded." + extension,
+      { "Temp\xE9rature", std::string(300, 'w') }, { "Temp\xC3\xA9rature", std::string(240, 'w') },
+      extension + ": a Latin-1 name and a 300-byte name");
   }
 
   // Format overrides the extension.
