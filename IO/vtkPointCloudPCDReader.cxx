@@ -1062,6 +1062,15 @@ bool PCDParser::Read(vtkPolyData* output, bool decodeColors, bool createVertexCe
       "binary data of " + std::to_string(this->RowSize) + "-byte points from byte " +
         std::to_string(start) + ", the file has " + std::to_string(this->In.FileSize()) + " bytes");
   }
+  if (this->Data == Encoding::Binary && remaining / this->RowSize > this->Points)
+  {
+    // Whole points more than declared would be dropped unsaid (a byte or a few after the data
+    // are no point).
+    return this->Fail("the header declares " + std::to_string(this->Points) + " points of " +
+      std::to_string(this->RowSize) + " bytes, but " + std::to_string(remaining) +
+      " bytes of binary data follow it (" + std::to_string(remaining / this->RowSize) +
+      " points): a wrong POINTS count");
+  }
   if (this->Data == Encoding::Ascii && this->Points > 0)
   {
     // A line holds each value and a separator after it (the last line may end without one).

@@ -959,6 +959,15 @@ bool PLYParser::CheckVertexBytes(const Element& vertex)
     return this->FailEnd(
       vertex, remaining / rowSize, this->BinaryDetail(start, vertex.Count, rowSize));
   }
+  // The last element, followed by whole rows more: a count smaller than the rows stored would
+  // drop them unsaid (a byte or a few after the data, as some writers leave, are no row).
+  if (&vertex == &this->Elements.back() && remaining / rowSize > vertex.Count)
+  {
+    return this->Fail("the header declares " + std::to_string(vertex.Count) + " " + vertex.Name +
+      " rows of " + std::to_string(rowSize) + " bytes, but " + std::to_string(remaining) +
+      " bytes follow end_header (" + std::to_string(remaining / rowSize) +
+      " rows): a wrong count, or data the header does not declare");
+  }
   return true;
 }
 

@@ -518,6 +518,8 @@ void Malformed()
       xyz + "WIDTH 1000000000000\nHEIGHT 1\nPOINTS 1000000000000\nDATA binary\n" +
         std::string(120, '\0'),
       "the file ends in point 11 of 1000000000000" },
+    { "more-binary.pcd", xyz + "WIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA binary\n" + std::string(60, '\0'),
+      "the header declares 2 points of 12 bytes, but 60 bytes of binary data follow it (5 points)" },
     { "huge-ascii.pcd", xyz + "WIDTH 4000000000\nPOINTS 4000000000\nDATA ascii\n1 2 3\n4 5 6\n",
       "the header declares 4000000000 points, but the 12 bytes of ASCII data after it can hold at "
       "most 2" },

@@ -601,6 +601,11 @@ void TestErrors()
     "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\n"
     "property float z\nend_header\n1 2 3\n",
     "ends in vertex 2 of 4000000000");
+  ExpectError("more rows than the count", "more_rows.ply",
+    "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\n"
+    "property float y\nproperty float z\nend_header\n" +
+      std::string(60, '\0'),
+    "the header declares 2 vertex rows of 12 bytes, but 60 bytes follow end_header (5 rows)");
   ExpectError("huge count, binary", "huge_binary.ply",
     "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
     "property float y\nproperty float z\nend_header\n" +
