@@ -50,6 +50,8 @@ constexpr size_t LegacyPointCountAt = 107;
 constexpr size_t ScaleAt = 131;      // x, y, z: 3 doubles
 constexpr size_t OffsetAt = 155;     // x, y, z: 3 doubles
 constexpr size_t PointCountAt = 247; // LAS 1.4: unsigned 64-bit
+constexpr size_t WaveformStartAt = 227; // LAS 1.3 and later: unsigned 64-bit, 0 where none
+constexpr size_t FirstEVLRAt = 235;     // LAS 1.4: unsigned 64-bit, 0 where none
 constexpr size_t HeaderSize12 = 227, HeaderSize13 = 235, HeaderSize14 = 375;
 
 // What a point data record format holds and where (bytes from the start of the record).
@@ -249,6 +251,27 @@ int vtkPointCloudLASReader::RequestData(
     return bad("the header declares " + std::to_string(count) + " points of " +
       std::to_string(recordLength) + " bytes from byte " + std::to_string(pointOffset) +
       ", but the file (" + std::to_string(fileSize) + " bytes) holds " + std::to_string(room));
+  }
+  // Whole records beyond the declared count, up to the end of the file or what may follow the
+  // points (1.3's waveform packets, 1.4's extended records), would be dropped unsaid.
+  uint64_t pointsEnd = fileSize;
+  for (const size_t at : { WaveformStartAt, FirstEVLRAt })
+  {
+    const uint64_t next = (at == WaveformStartAt ? minor >= 3 && headerSize >= HeaderSize13
+                                                 : minor >= 4 && headerSize >= HeaderSize14)
+      ? Load<uint64_t>(header + at, swap)
+      : 0;
+    if (next > pointOffset && next < pointsEnd)
+    {
+      pointsEnd = next;
+    }
+  }
+  if ((pointsEnd - pointOffset) / recordLength > count)
+  {
+    return bad("the header declares " + std::to_string(count) + " points of " +
+      std::to_string(recordLength) + " bytes from byte " + std::to_string(pointOffset) +
+      ", but " + std::to_string((pointsEnd - pointOffset) / recordLength) +
+      " follow there: a wrong point count");
   }
   this->VersionMajor = major;
   this->VersionMinor = minor;

@@ -294,6 +294,9 @@ void Malformed()
      }),
       "the header declares 1125899906842624 points" },
     { "cut.las", good.substr(0, good.size() - 1), "the file (310 bytes) holds 2" },
+    { "count-fewer.las", with([](File& f) { f.DeclaredPoints = 2; }),
+      "the header declares 2 points of 28 bytes from byte 227, but 3 follow there: a wrong point "
+      "count" },
   };
   for (const Case& c : cases)
   {
