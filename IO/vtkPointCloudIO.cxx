@@ -631,6 +631,11 @@ std::string LegacyPointsProblem(const std::string& fileName)
       return {};
     }
     dataset = dataset || (number >= 4 && keyword == "DATASET");
+    if (dataset && (keyword == "FIELD" || keyword == "POINT_DATA" || keyword == "CELL_DATA"))
+    {
+      return {}; // field data first, whose arrays may hold a line like a POINTS line (see
+                 // CheckLegacyPoints): VTK's message stands
+    }
     if (dataset && keyword == "POINTS")
     {
       const auto parsed = std::from_chars(declared.data(), declared.data() + declared.size(), count);
