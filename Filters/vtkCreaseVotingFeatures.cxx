@@ -17,12 +17,14 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <deque>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <vector>
@@ -1035,6 +1037,9 @@ struct CreaseRun
   std::function<void(int, const std::function<void(vtkIdType, unsigned char*)>&,
     const std::function<void(vtkIdType, const unsigned char*)>&)>
     RecordsFromOwners;
+  // Distributed runs: this process's rank; every process's values one after the other.
+  int ProcessRank = 0;
+  std::function<void(std::vector<double>&)> GatherAll = [](std::vector<double>&) {};
   bool IsOwn(vtkIdType id) const { return !this->Own || this->Own[id] != 0; }
   // Whether the current pass leaves row r out: a halo row (whose values come from its owner),
   // or pass 1 or 2 of Stream() on a deferred row.
@@ -1092,6 +1097,24 @@ struct CreaseRun
   // Step 1a: PCA normals of the `kn` nearest, turned away from the cloud's centre, and sigma^2:
   // the median over the cloud of their quadric's residual per degree of freedom.
   void ComputeNormals(int kn, const double center[3], float* normal);
+  // Step 1b: one consistent orientation of the normals (Hoppe et al. 1992): a minimum spanning
+  // tree over the `kn` nearest, weighted by 1 - |cos| of the normals' angle and the steps'
+  // sine out of the tangent plane, carries each normal's side to the next across the gentlest
+  // bends, along the surface, never across a thin wall. By row: the connected set of points
+  // (unit) it belongs to and its side (+1 or -1, relative to the normal as ComputeNormals()
+  // turned it); by unit: the volume its own points enclose with the centre c on that side,
+  // Sum a (x - c).n (a: each point's share of the surface, pi r^2 / kn with r the distance to
+  // its kn-th nearest, so that the sampling's density does not weigh).
+  void OrientNormals(int kn, const double center[3], const float* normal,
+    std::vector<int32_t>& unit, std::vector<signed char>& side, std::vector<double>& volume) const;
+  // Each unit's final side, the one that encloses a positive volume (divergence theorem): on a
+  // closed surface the outward side wherever the centre lies; on an open one the side away
+  // from the centre's, a convention. Distributed runs first join the units of all pieces that
+  // share points (by the sides of the halo's points and their owners'). Sets flip[id] where
+  // the final side is against the normal as computed. The crease fits read the normals up to
+  // their sign; only convex or concave turns on it.
+  void ChooseSides(const std::vector<int32_t>& unit, const std::vector<signed char>& side,
+    const std::vector<double>& volume, std::vector<unsigned char>& flip) const;
   // Storage of the fits, the sheets and the per-point flags of Stream()'s passes.
   void PrepareFits(vtkPointCloudNeighborhoods* neighborhoods);
   // Links of point id (its row of KNear nearest) across to the neighbouring rows of a sampling in
@@ -1249,6 +1272,256 @@ void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
   });
   this->Variance =
     std::max(this->RowMedian(residual), NoiseFloor * NoiseFloor * this->D * this->D);
+}
+
+void CreaseRun::OrientNormals(int kn, const double center[3], const float* normal,
+  std::vector<int32_t>& unit, std::vector<signed char>& side, std::vector<double>& volume) const
+{
+  side.assign(static_cast<size_t>(this->Rows), 0); // 0: not reached yet
+  unit.assign(static_cast<size_t>(this->Rows), -1);
+  volume.clear();
+  // The tree's frontier: an edge's weight, the row it reaches and the row it comes from; the
+  // lightest first (the result does not depend on the heap's layout),
+  // ties by the points' global ids (the same order in a distributed run's pieces).
+  struct Edge
+  {
+    float Weight;
+    int32_t To, From;
+    long long ToId, FromId;
+    bool operator<(const Edge& other) const
+    {
+      return this->Weight != other.Weight ? this->Weight > other.Weight
+        : this->ToId != other.ToId        ? this->ToId > other.ToId
+                                          : this->FromId > other.FromId;
+    }
+  };
+  std::vector<Edge> heap;
+  std::vector<int32_t> members, buffer(static_cast<size_t>(this->K));
+  // The graph, both ways: each row's kn nearest and the rows that count it among theirs. Only
+  // the own points' nearest: a halo point's are the nearest its piece holds, not the cloud's.
+  auto forEachLink = [&](const std::function<void(vtkIdType, vtkIdType)>& visit) {
+    for (vtkIdType r = 0; r < this->Rows; ++r)
+    {
+      const int32_t* row = this->IsOwn(this->Ids[r]) ? this->Row(r, buffer.data(), kn) : nullptr;
+      const int count = row ? featurepoints::RowLength(row, kn) : 0;
+      for (int j = 0; j < count; ++j)
+      {
+        if (this->RowOf[row[j]] >= 0)
+        {
+          visit(r, this->RowOf[row[j]]);
+        }
+      }
+    }
+  };
+  std::vector<int64_t> first(static_cast<size_t>(this->Rows) + 1, 0);
+  forEachLink([&](vtkIdType r, vtkIdType to) {
+    ++first[r + 1];
+    ++first[to + 1];
+  });
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<int32_t> links(static_cast<size_t>(first.back()));
+  std::vector<int64_t> next(first.begin(), first.end() - 1);
+  forEachLink([&](vtkIdType r, vtkIdType to) {
+    links[next[r]++] = static_cast<int32_t>(to);
+    links[next[to]++] = static_cast<int32_t>(r);
+  });
+  std::vector<int64_t>().swap(next);
+  auto normalOf = [&](vtkIdType r) {
+    const float* n = normal + 3 * this->Ids[r];
+    return Eigen::Vector3d(n[0], n[1], n[2]);
+  };
+  // Per row: its global id, and the best edge offered to it so far (a heavier one is not
+  // pushed: the heap holds a few edges per point, not all of them).
+  std::vector<long long> globalId(static_cast<size_t>(this->Rows));
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    globalId[r] = this->GlobalId(this->Ids[r]);
+  }
+  std::vector<Edge> offered(static_cast<size_t>(this->Rows),
+    Edge{ std::numeric_limits<float>::infinity(), -1, -1, 0, 0 });
+  auto reach = [&](int32_t from) {
+    const Eigen::Vector3d n = normalOf(from);
+    double x[3], y[3];
+    this->Reader.Get(this->Ids[from], x);
+    for (int64_t l = first[from]; l < first[from + 1]; ++l)
+    {
+      const int32_t to = links[l];
+      if (side[to] == 0)
+      {
+        // The other side of a wall thinner than the neighbourhood has the same normal up to its
+        // sign: a step that leaves either point's tangent plane by more than 30 degrees and more than the
+        // noise (3 sigma) explains is no step along the surface, and carries nothing.
+        this->Reader.Get(this->Ids[to], y);
+        const Eigen::Vector3d step(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+        const double length = step.norm();
+        const Eigen::Vector3d m = normalOf(to);
+        const double height = std::max(std::abs(n.dot(step)), std::abs(m.dot(step)));
+        if (height > 0.5 * length && height * height > 9.0 * this->Variance)
+        {
+          continue;
+        }
+        // Normals more than 60 degrees apart (up to their sign): which side of one matches which
+        // of the other is a guess.
+        const double bend = std::abs(n.dot(m));
+        if (bend < 0.5)
+        {
+          continue;
+        }
+        // The bend, and how far the step leaves the tangent plane.
+        const double across = length > 0.0 ? height / length : 0.0;
+        const float weight = static_cast<float>(1.0 - bend + across);
+        const Edge edge{ weight, to, from, globalId[to], globalId[from] };
+        if (offered[to] < edge) // edge is lighter (the heap's order is reversed)
+        {
+          offered[to] = edge;
+          heap.push_back(edge);
+          std::push_heap(heap.begin(), heap.end());
+        }
+      }
+    }
+  };
+  for (vtkIdType seed = 0; seed < this->Rows; ++seed)
+  {
+    if (side[seed] != 0)
+    {
+      continue;
+    }
+    members.assign(1, static_cast<int32_t>(seed));
+    side[seed] = 1;
+    reach(static_cast<int32_t>(seed));
+    while (!heap.empty())
+    {
+      std::pop_heap(heap.begin(), heap.end());
+      const Edge e = heap.back();
+      heap.pop_back();
+      if (side[e.To] != 0)
+      {
+        continue;
+      }
+      side[e.To] = normalOf(e.From).dot(normalOf(e.To)) < 0.0 ? -side[e.From] : side[e.From];
+      members.push_back(e.To);
+      reach(e.To);
+    }
+    double x[3], y[3], enclosed = 0.0;
+    for (int32_t r : members)
+    {
+      unit[r] = static_cast<int32_t>(volume.size());
+      const vtkIdType id = this->Ids[r];
+      const int32_t* row = this->Row(r, buffer.data(), kn);
+      const int count = featurepoints::RowLength(row, kn);
+      if (!this->IsOwn(id) || count == 0)
+      {
+        continue;
+      }
+      this->Reader.Get(id, x);
+      this->Reader.Get(row[count - 1], y);
+      const double area = vtkMath::Distance2BetweenPoints(x, y) / count;
+      const Eigen::Vector3d d(x[0] - center[0], x[1] - center[1], x[2] - center[2]);
+      enclosed += area * side[r] * normalOf(r).dot(d);
+    }
+    volume.push_back(enclosed);
+  }
+}
+
+void CreaseRun::ChooseSides(const std::vector<int32_t>& unit, const std::vector<signed char>& side,
+  const std::vector<double>& volume, std::vector<unsigned char>& flip) const
+{
+  // A unit's key: its number here and the process's rank (exact in a double).
+  auto key = [&](int32_t u) { return static_cast<double>(u) * 65536.0 + this->ProcessRank; };
+  // Distributed runs: how often each unit here and its owners' units agree on the halo's sides.
+  std::vector<double> pairs; // (key here, owner's key, agreeing, disagreeing) each
+  if (this->Distributed)
+  {
+    std::vector<long long> code(static_cast<size_t>(this->N), -1), mine;
+    for (vtkIdType r = 0; r < this->Rows; ++r)
+    {
+      code[this->Ids[r]] = static_cast<long long>(key(unit[r])) * 2 + (side[r] < 0 ? 1 : 0);
+    }
+    mine = code;
+    this->FromOwners(code.data(), static_cast<int>(sizeof(long long)));
+    std::map<std::pair<double, double>, std::array<double, 2>> counts;
+    for (vtkIdType r = 0; r < this->Rows; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      if (!this->IsOwn(id) && code[id] >= 0)
+      {
+        auto& c = counts[{ key(unit[r]), static_cast<double>(code[id] / 2) }];
+        c[(code[id] & 1) == (mine[id] & 1) ? 0 : 1] += 1.0;
+      }
+    }
+    for (const auto& c : counts)
+    {
+      pairs.insert(pairs.end(), { c.first.first, c.first.second, c.second[0], c.second[1] });
+    }
+  }
+  std::vector<double> units; // (key, volume) each
+  for (size_t u = 0; u < volume.size(); ++u)
+  {
+    units.insert(units.end(), { key(static_cast<int32_t>(u)), volume[u] });
+  }
+  this->GatherAll(pairs);
+  this->GatherAll(units);
+  // Every process the same from here: the units joined by their pairs (agreeing or not, by the
+  // majority of the shared points), each set turned to the side of its whole volume.
+  const size_t count = units.size() / 2;
+  std::vector<std::pair<double, size_t>> order(count);
+  for (size_t u = 0; u < count; ++u)
+  {
+    order[u] = { units[2 * u], u };
+  }
+  std::sort(order.begin(), order.end());
+  auto indexOf = [&](double k) {
+    return std::lower_bound(order.begin(), order.end(), std::make_pair(k, size_t(0)))->second;
+  };
+  std::map<std::pair<size_t, size_t>, std::array<double, 2>> joined;
+  for (size_t p = 0; p + 3 < pairs.size(); p += 4)
+  {
+    size_t a = indexOf(pairs[p]), b = indexOf(pairs[p + 1]);
+    auto& c = joined[{ std::min(a, b), std::max(a, b) }];
+    c[0] += pairs[p + 2];
+    c[1] += pairs[p + 3];
+  }
+  std::vector<std::vector<std::pair<size_t, int>>> links(count);
+  for (const auto& j : joined)
+  {
+    const int relation = j.second[0] >= j.second[1] ? 1 : -1;
+    links[j.first.first].emplace_back(j.first.second, relation);
+    links[j.first.second].emplace_back(j.first.first, relation);
+  }
+  std::vector<int> relative(count, 0), final(count, 1);
+  std::vector<size_t> set;
+  for (const auto& start : order)
+  {
+    if (relative[start.second] != 0)
+    {
+      continue;
+    }
+    set.assign(1, start.second);
+    relative[start.second] = 1;
+    double enclosed = 0.0;
+    for (size_t i = 0; i < set.size(); ++i)
+    {
+      const size_t u = set[i];
+      enclosed += relative[u] * units[2 * u + 1];
+      for (const auto& link : links[u])
+      {
+        if (relative[link.first] == 0)
+        {
+          relative[link.first] = relative[u] * link.second;
+          set.push_back(link.first);
+        }
+      }
+    }
+    for (size_t u : set)
+    {
+      final[u] = enclosed < 0.0 ? -relative[u] : relative[u];
+    }
+  }
+  flip.assign(static_cast<size_t>(this->N), 0);
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    flip[this->Ids[r]] = side[r] * final[indexOf(key(unit[r]))] < 0 ? 1 : 0;
+  }
 }
 
 void CreaseRun::GatherSheet(
@@ -2794,6 +3067,8 @@ int vtkCreaseVotingFeatures::RequestData(
       this->GlobalLabelCounts(labels, counts);
     };
     run.GlobalId = [&](vtkIdType id) { return this->GlobalId(id); };
+    run.ProcessRank = this->GetProcessRank();
+    run.GatherAll = [&](std::vector<double>& values) { this->GatherAll(values); };
     run.RecordsFromOwners = [&](int bytes,
                               const std::function<void(vtkIdType, unsigned char*)>& read,
                               const std::function<void(vtkIdType, const unsigned char*)>& write) {
@@ -2812,6 +3087,15 @@ int vtkCreaseVotingFeatures::RequestData(
   this->BeginStage("normals");
   run.ComputeNormals(this->NormalNeighbors, this->CloudCenter(neighborhoods), normal);
   this->NoiseSigma = std::sqrt(run.Variance);
+  std::vector<unsigned char> flip;
+  {
+    std::vector<int32_t> unit;
+    std::vector<signed char> side;
+    std::vector<double> volume;
+    run.OrientNormals(this->NormalNeighbors, this->CloudCenter(neighborhoods), normal, unit,
+      side, volume);
+    run.ChooseSides(unit, side, volume, flip);
+  }
   this->UpdateProgress(0.2);
 
   // Steps 0-4 and the borders' empty sectors, row by row as the k nearest are found.
@@ -2959,6 +3243,15 @@ int vtkCreaseVotingFeatures::RequestData(
   this->ShareHaloValues(m, 1, HALO_FROM_OWNER);
   unsigned char* type = types->GetPointer(0);
   run.ClassifyFeatures(m, border.data(), outward.data(), this->MinimumAngle, BorderNeighbors, type);
+  // The consistent orientation: the normals turned to it, and convex and concave with them.
+  for (vtkIdType id : ids)
+  {
+    if (flip[id])
+    {
+      std::transform(normal + 3 * id, normal + 3 * id + 3, normal + 3 * id, std::negate<float>());
+      type[id] = type[id] == CONVEX ? CONCAVE : type[id] == CONCAVE ? CONVEX : type[id];
+    }
+  }
   this->ShareHaloValues(type, 1, HALO_FROM_OWNER);
   if (this->ThinFeatures)
   {

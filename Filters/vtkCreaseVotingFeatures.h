@@ -94,7 +94,13 @@
  *    degrees in their tangent plane is on a border (sets of fewer than 25 connected such points,
  *    the rims of voids in the sampling, are dropped); the points within BandWidth d of it join.
  * 8. FeatureType: BORDER, else CONVEX or CONCAVE by the side of the line the fitted planes'
- *    centroids lie on, against the point's normal; then CORNER where the directions of the
+ *    centroids lie on, against the point's normal, oriented consistently: a minimum spanning
+ *    tree over the NormalNeighbors nearest (weights 1 - |cos| of the normals' angle plus the
+ *    step's sine out of the tangent plane; no step across a wall thinner than the neighbourhood,
+ *    none between normals more than 60 degrees apart) carries each normal's side to the next,
+ *    and each connected set takes the side that encloses a positive volume with the bounding
+ *    box's centre (outward on a closed surface; on an open sheet the side away from the centre's,
+ *    a convention). Then CORNER where the directions of the
  *    feature points around the point run more than one way. A crease point's direction is its
  *    crease line, where its fit explains its neighbourhood and votes; a border point's is along
  *    the border, in the tangent plane of its 50 nearest on the sheet (on a thin wall's rim the
@@ -126,7 +132,7 @@
  *
  * Output arrays: `CreaseVotes` (float, the score, 0-1), `CreaseGain` (float, G_i), `CreaseAngle`
  * (float, the angle between the two fitted planes in degrees, 0 when no line was found),
- * `Normals` (float, 3, the PCA normals of step 1, oriented away from the bounding box's centre),
+ * `Normals` (float, 3, the PCA normals of step 1, oriented as in step 8: outward on a closed part),
  * `FeatureType` (uint8, FeatureTypes) and `FeatureMask`. GetNoiseSigma() returns sigma, in the cloud's units.
  *
  * The work per point depends on that point only: the result is identical for any thread count.

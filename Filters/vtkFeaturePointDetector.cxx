@@ -670,6 +670,32 @@ void vtkFeaturePointDetector::GlobalLabelCounts(
   }
 }
 
+int vtkFeaturePointDetector::GetProcessRank() const
+{
+  return this->IsDistributed() ? this->Controller->GetLocalProcessId() : 0;
+}
+
+void vtkFeaturePointDetector::GatherAll(std::vector<double>& values) const
+{
+  if (!this->IsDistributed())
+  {
+    return;
+  }
+  const int nProcs = this->Controller->GetNumberOfProcesses();
+  long long mine = static_cast<long long>(values.size());
+  std::vector<long long> sizes(nProcs, 0);
+  this->Controller->AllGather(&mine, sizes.data(), 1);
+  std::vector<vtkIdType> lengths, offsets;
+  const vtkIdType total = GatherLayout(sizes, lengths, offsets);
+  std::vector<double> all(static_cast<size_t>(std::max<vtkIdType>(total, 1)));
+  std::vector<double> send(values);
+  send.resize(std::max<size_t>(send.size(), 1));
+  this->Controller->AllGatherV(send.data(), all.data(), static_cast<vtkIdType>(values.size()),
+    lengths.data(), offsets.data());
+  all.resize(static_cast<size_t>(total));
+  values.swap(all);
+}
+
 bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods* neighborhoods)
 {
   if (!(d > 0.0))

@@ -361,6 +361,14 @@ protected:
    */
   void GlobalLabelCounts(const std::vector<long long>& labels, std::vector<long long>& counts) const;
 
+  /**
+   * Distributed runs: every process's `values` one after the other, in the order of the
+   * processes, on every process (collective). Alone: `values` as they are.
+   */
+  void GatherAll(std::vector<double>& values) const;
+  // This process's rank in a distributed run; 0 otherwise.
+  int GetProcessRank() const;
+
   // Distributed runs: the own points (from the input's vtkGhostType) and the cloud's bounds, after
   // the renumbering of PrepareNeighborhoods.
   void PrepareOwnership(vtkPointCloudNeighborhoods* neighborhoods);
