@@ -337,6 +337,10 @@ public:
   std::vector<Chain> MergeThrough(std::vector<Chain> chains,
     std::vector<std::array<int, 2>>& through) const;
   void SplitAtCorners();
+  // A curve that runs along a border and then along a crease (a crease ending on a border that
+  // goes on, traced round the junction) is two: split where the type of the feature points
+  // around its vertices changes, each side for at least 2 CornerWindow s.
+  void SplitAtTypeChanges();
   // Short curves between two junctions (a corner traced round as well as along its edges) are
   // collapsed into one corner.
   void CollapseShortLinks();
@@ -1700,6 +1704,50 @@ void CurveRun::SplitAtCorners()
   }
 }
 
+void CurveRun::SplitAtTypeChanges()
+{
+  const int w = std::max(1, static_cast<int>(std::lround(2.0 * CornerWindow * this->S / this->H)));
+  for (const Chain& chain : this->ExtractChains())
+  {
+    const int count = static_cast<int>(chain.Ids.size());
+    if (chain.Closed || count < 2 * w)
+    {
+      continue;
+    }
+    // Border or not at each vertex, then the majority over w vertices either side (a stray
+    // vertex of the other type is noise).
+    std::vector<int> border(count + 1, 0); // running count
+    for (int k = 0; k < count; ++k)
+    {
+      border[k + 1] = border[k] + (this->LocalType(this->G.Vertices[chain.Ids[k]]) == BORDER);
+    }
+    std::vector<unsigned char> type(count);
+    for (int k = 0; k < count; ++k)
+    {
+      const int lo = std::max(0, k - w), hi = std::min(count, k + w + 1);
+      type[k] = 2 * (border[hi] - border[lo]) > hi - lo ? 1 : 0;
+    }
+    // The changes between runs of at least w vertices each.
+    int start = 0, previous = -1;
+    for (int k = 1; k <= count; ++k)
+    {
+      if (k < count && type[k] == type[start])
+      {
+        continue;
+      }
+      if (k - start >= w)
+      {
+        if (previous >= 0 && type[previous] != type[start])
+        {
+          this->G.Node[chain.Ids[start]] = 1;
+        }
+        previous = start;
+      }
+      start = k;
+    }
+  }
+}
+
 unsigned char CurveRun::LocalType(const V3& x) const
 {
   this->AllSearch.Within(x, 2.0 * this->S, this->Scratch);
@@ -2537,6 +2585,7 @@ int vtkFeatureCurveExtraction::RequestData(
   run.BridgeAlongCreases();
   run.RemoveFlatPieces();
   run.SplitAtCorners();
+  run.SplitAtTypeChanges();
   std::vector<std::array<int, 2>> through;
   const std::vector<Chain> chains = run.MergeThrough(run.ExtractChains(), through);
   std::vector<std::vector<V3>> curves = run.FitCurves(chains);
