@@ -1280,22 +1280,6 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
   side.assign(static_cast<size_t>(this->Rows), 0); // 0: not reached yet
   unit.assign(static_cast<size_t>(this->Rows), -1);
   volume.clear();
-  // The tree's frontier: an edge's weight, the row it reaches and the row it comes from; the
-  // lightest first (the result does not depend on the heap's layout),
-  // ties by the points' global ids (the same order in a distributed run's pieces).
-  struct Edge
-  {
-    float Weight;
-    int32_t To, From;
-    long long ToId, FromId;
-    bool operator<(const Edge& other) const
-    {
-      return this->Weight != other.Weight ? this->Weight > other.Weight
-        : this->ToId != other.ToId        ? this->ToId > other.ToId
-                                          : this->FromId > other.FromId;
-    }
-  };
-  std::vector<Edge> heap;
   std::vector<int32_t> members, buffer(static_cast<size_t>(this->K));
   // The graph, both ways: each row's kn nearest and the rows that count it among theirs. Only
   // the own points' nearest: a halo point's are the nearest its piece holds, not the cloud's.
@@ -1320,63 +1304,74 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
   });
   std::partial_sum(first.begin(), first.end(), first.begin());
   std::vector<int32_t> links(static_cast<size_t>(first.back()));
-  std::vector<int64_t> next(first.begin(), first.end() - 1);
-  forEachLink([&](vtkIdType r, vtkIdType to) {
-    links[next[r]++] = static_cast<int32_t>(to);
-    links[next[to]++] = static_cast<int32_t>(r);
-  });
-  std::vector<int64_t>().swap(next);
+  {
+    std::vector<int64_t> next(first.begin(), first.end() - 1);
+    forEachLink([&](vtkIdType r, vtkIdType to) {
+      links[next[r]++] = static_cast<int32_t>(to);
+      links[next[to]++] = static_cast<int32_t>(r);
+    });
+  }
   auto normalOf = [&](vtkIdType r) {
     const float* n = normal + 3 * this->Ids[r];
     return Eigen::Vector3d(n[0], n[1], n[2]);
   };
-  // Per row: its global id, and the best edge offered to it so far (a heavier one is not
-  // pushed: the heap holds a few edges per point, not all of them).
-  std::vector<long long> globalId(static_cast<size_t>(this->Rows));
-  for (vtkIdType r = 0; r < this->Rows; ++r)
-  {
-    globalId[r] = this->GlobalId(this->Ids[r]);
-  }
-  std::vector<Edge> offered(static_cast<size_t>(this->Rows),
-    Edge{ std::numeric_limits<float>::infinity(), -1, -1, 0, 0 });
-  auto reach = [&](int32_t from) {
-    const Eigen::Vector3d n = normalOf(from);
+  // Each link's weight (in parallel): the bend, 1 - |cos| of the normals' angle, plus the step's
+  // sine out of the tangent plane, in 1/127 (NoLink where the link carries nothing). The other
+  // side of a wall thinner than the neighbourhood has the same normal up to its sign: a step
+  // that leaves either point's tangent plane by more than 30 degrees and more than the noise
+  // (3 sigma) explains is no step along the surface. Normals more than 60 degrees apart (up to
+  // their sign): which side of one matches which of the other is a guess.
+  constexpr uint8_t NoLink = 255;
+  std::vector<uint8_t> weight(links.size(), NoLink);
+  // And each own point's share of the volume on the side of its normal, a (x - c).n.
+  std::vector<double> share(static_cast<size_t>(this->Rows), 0.0);
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     double x[3], y[3];
-    this->Reader.Get(this->Ids[from], x);
+    std::vector<int32_t> nearest(static_cast<size_t>(this->K));
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const Eigen::Vector3d n = normalOf(r);
+      this->Reader.Get(this->Ids[r], x);
+      const int32_t* row = this->Row(r, nearest.data(), kn);
+      const int count = featurepoints::RowLength(row, kn);
+      if (this->IsOwn(this->Ids[r]) && count > 0)
+      {
+        this->Reader.Get(row[count - 1], y);
+        const double area = vtkMath::Distance2BetweenPoints(x, y) / count;
+        share[r] = area * n.dot(Eigen::Vector3d(x[0] - center[0], x[1] - center[1], x[2] - center[2]));
+      }
+      for (int64_t l = first[r]; l < first[r + 1]; ++l)
+      {
+        const int32_t to = links[l];
+        this->Reader.Get(this->Ids[to], y);
+        const Eigen::Vector3d step(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+        const Eigen::Vector3d m = normalOf(to);
+        const double length = step.norm();
+        const double height = std::max(std::abs(n.dot(step)), std::abs(m.dot(step)));
+        const double bend = std::abs(n.dot(m));
+        if ((height > 0.5 * length && height * height > 9.0 * this->Variance) || bend < 0.5)
+        {
+          continue;
+        }
+        const double across = length > 0.0 ? height / length : 0.0;
+        weight[l] = static_cast<uint8_t>(std::min(254.0, std::round(127.0 * (1.0 - bend + across))));
+      }
+    }
+  });
+  // The tree's frontier: a stack of (row reached, row it comes from) per weight, the lightest
+  // first; a link is offered only when lighter than the best offered to its row so far.
+  std::vector<std::vector<std::pair<int32_t, int32_t>>> frontier(NoLink);
+  std::vector<uint8_t> best(static_cast<size_t>(this->Rows), NoLink);
+  int lightest = NoLink;
+  auto reach = [&](int32_t from) {
     for (int64_t l = first[from]; l < first[from + 1]; ++l)
     {
       const int32_t to = links[l];
-      if (side[to] == 0)
+      if (side[to] == 0 && weight[l] < best[to])
       {
-        // The other side of a wall thinner than the neighbourhood has the same normal up to its
-        // sign: a step that leaves either point's tangent plane by more than 30 degrees and more than the
-        // noise (3 sigma) explains is no step along the surface, and carries nothing.
-        this->Reader.Get(this->Ids[to], y);
-        const Eigen::Vector3d step(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
-        const double length = step.norm();
-        const Eigen::Vector3d m = normalOf(to);
-        const double height = std::max(std::abs(n.dot(step)), std::abs(m.dot(step)));
-        if (height > 0.5 * length && height * height > 9.0 * this->Variance)
-        {
-          continue;
-        }
-        // Normals more than 60 degrees apart (up to their sign): which side of one matches which
-        // of the other is a guess.
-        const double bend = std::abs(n.dot(m));
-        if (bend < 0.5)
-        {
-          continue;
-        }
-        // The bend, and how far the step leaves the tangent plane.
-        const double across = length > 0.0 ? height / length : 0.0;
-        const float weight = static_cast<float>(1.0 - bend + across);
-        const Edge edge{ weight, to, from, globalId[to], globalId[from] };
-        if (offered[to] < edge) // edge is lighter (the heap's order is reversed)
-        {
-          offered[to] = edge;
-          heap.push_back(edge);
-          std::push_heap(heap.begin(), heap.end());
-        }
+        best[to] = weight[l];
+        frontier[weight[l]].emplace_back(to, from);
+        lightest = std::min(lightest, static_cast<int>(weight[l]));
       }
     }
   };
@@ -1389,35 +1384,32 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
     members.assign(1, static_cast<int32_t>(seed));
     side[seed] = 1;
     reach(static_cast<int32_t>(seed));
-    while (!heap.empty())
+    while (true)
     {
-      std::pop_heap(heap.begin(), heap.end());
-      const Edge e = heap.back();
-      heap.pop_back();
-      if (side[e.To] != 0)
+      while (lightest < NoLink && frontier[lightest].empty())
+      {
+        ++lightest;
+      }
+      if (lightest == NoLink)
+      {
+        break;
+      }
+      const std::pair<int32_t, int32_t> e = frontier[lightest].back();
+      frontier[lightest].pop_back();
+      if (side[e.first] != 0)
       {
         continue;
       }
-      side[e.To] = normalOf(e.From).dot(normalOf(e.To)) < 0.0 ? -side[e.From] : side[e.From];
-      members.push_back(e.To);
-      reach(e.To);
+      side[e.first] =
+        normalOf(e.second).dot(normalOf(e.first)) < 0.0 ? -side[e.second] : side[e.second];
+      members.push_back(e.first);
+      reach(e.first);
     }
-    double x[3], y[3], enclosed = 0.0;
+    double enclosed = 0.0;
     for (int32_t r : members)
     {
       unit[r] = static_cast<int32_t>(volume.size());
-      const vtkIdType id = this->Ids[r];
-      const int32_t* row = this->Row(r, buffer.data(), kn);
-      const int count = featurepoints::RowLength(row, kn);
-      if (!this->IsOwn(id) || count == 0)
-      {
-        continue;
-      }
-      this->Reader.Get(id, x);
-      this->Reader.Get(row[count - 1], y);
-      const double area = vtkMath::Distance2BetweenPoints(x, y) / count;
-      const Eigen::Vector3d d(x[0] - center[0], x[1] - center[1], x[2] - center[2]);
-      enclosed += area * side[r] * normalOf(r).dot(d);
+      enclosed += side[r] * share[r];
     }
     volume.push_back(enclosed);
   }

@@ -1,9 +1,11 @@
 // vtkCreaseVotingFeatures, the default detector: the output conventions of every detector, quality
-// on a 90-degree and a 20-degree crease and on a plane, bit-identical output for any thread count
-// and backend, and bad input (NaN coordinates, too few points) without a crash or a NaN.
+// on a 90-degree and a 20-degree crease and on a plane, convex and concave on a closed bracket,
+// bit-identical output for any thread count and backend, and bad input (NaN coordinates, too few
+// points) without a crash or a NaN.
 // The held-out quality floors are in Benchmarks (FeaturePoints::QualityFloors).
 #include "FeaturePointsTestRun.h"
 #include "vtkCreaseVotingFeatures.h"
+#include "vtkFeatureModelSource.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -234,6 +236,40 @@ int TestCreaseVotingFeatures(int, char*[])
     FP_CHECK(farFound <= 0.002 * far, "crease along rows: %ld of %ld far points", farFound, far);
   }
 
+  // A closed part that is not convex (the bracket: its inner corner is concave, its top faces look
+  // at the box's centre): the normals are oriented consistently, so the crease points are typed
+  // convex or concave as the part is (1.000 of them when this was written).
+  {
+    vtkNew<vtkFeatureModelSource> source;
+    source->SetModel(vtkFeatureModelSource::BRACKET);
+    source->SetNumberOfPoints(20000);
+    source->SetFeatureDensityFactor(1.0);
+    source->SetNoiseFactor(0.25);
+    source->Update();
+    auto filter = Run(source->GetOutput(), true);
+    vtkDataArray* truth = source->GetOutput()->GetPointData()->GetArray("GroundTruthType");
+    vtkDataArray* types = filter->GetOutput()->GetPointData()->GetArray("FeatureType");
+    long typed = 0, same = 0, concave = 0;
+    for (vtkIdType i = 0; truth && types && i < filter->GetOutput()->GetNumberOfPoints(); ++i)
+    {
+      const int want = static_cast<int>(truth->GetTuple1(i));
+      const int got = static_cast<int>(types->GetTuple1(i));
+      const auto crease = [](int type) {
+        return type == vtkCreaseVotingFeatures::CONVEX || type == vtkCreaseVotingFeatures::CONCAVE;
+      };
+      if (crease(want) && crease(got))
+      {
+        ++typed;
+        same += got == want;
+        concave += got == want && want == vtkCreaseVotingFeatures::CONCAVE;
+      }
+    }
+    std::printf("%-18s %ld of %ld crease points typed as the part is, %ld of them concave\n",
+      "bracket", same, typed, concave);
+    FP_CHECK(typed > 0 && same >= 0.95 * typed, "bracket: %ld of %ld crease points typed right",
+      same, typed);
+    FP_CHECK(concave > 0, "bracket: no concave crease point typed so");
+  }
 
   // Same output for every backend and thread count.
   {
