@@ -312,7 +312,7 @@ const std::map<std::tuple<std::string, vtkIdType, double>, std::pair<double, dou
 
 struct MeshSummary
 {
-  std::vector<double> F1, ThinMCC, FalsePerThousand;
+  std::vector<double> F1, ThinMCC, FalsePerThousand, Convexity;
 };
 
 // Samples `mesh` at each count and sigma, runs the detectors on the coordinates and prints one
@@ -392,16 +392,29 @@ void RunMesh(const std::string& name, vtkPolyData* mesh, const std::vector<vtkId
           falsePoints += mask->GetTuple1(i) != 0.0;
         }
         const int t = static_cast<int>(truth->GetTuple1(i));
+        const int got = static_cast<int>(found->GetTuple1(i));
         if (t == vtkCreaseVotingFeatures::CORNER || t == vtkCreaseVotingFeatures::BORDER)
         {
           ++typeTotal[t];
-          typeFound[t] += found->GetTuple1(i) == t;
+          typeFound[t] += got == t;
+        }
+        // Convex or concave: the true crease points found as crease points, typed as the mesh.
+        if ((t == vtkCreaseVotingFeatures::CONVEX || t == vtkCreaseVotingFeatures::CONCAVE) &&
+          (got == vtkCreaseVotingFeatures::CONVEX || got == vtkCreaseVotingFeatures::CONCAVE))
+        {
+          ++typeTotal[0];
+          typeFound[0] += got == t;
         }
       }
       const double perThousand = far > 0.0 ? 1000.0 * falsePoints / far : 0.0;
       std::printf(" %6.2f |", perThousand);
-      for (const int t : { vtkCreaseVotingFeatures::CORNER, vtkCreaseVotingFeatures::BORDER })
+      for (const int t : { static_cast<int>(vtkCreaseVotingFeatures::CORNER),
+             static_cast<int>(vtkCreaseVotingFeatures::BORDER), 0 })
       {
+        if (t == 0 && typeTotal[0] > 0.0)
+        {
+          summary.Convexity.push_back(typeFound[0] / typeTotal[0]);
+        }
         if (typeTotal[t] > 0.0)
         {
           std::printf(" %6.3f |", typeFound[t] / typeTotal[t]);
@@ -589,11 +602,11 @@ std::vector<std::tuple<std::string, vtkSmartPointer<vtkPolyData>, std::string>> 
 
 void PrintMeshHeader(bool wangYuan)
 {
-  std::printf("  %7s %5s | %-22s| %6s | %6s | %6s | %6s | %5s |%s %5s\n", "points", "sigma",
-    "Crease P / R / F1", "false", "corner", "border", "thin", "Huang", wangYuan ? " WangY |" : "",
-    "s");
-  std::printf("  %7s %5s | %-22s| %6s | %6s | %6s | %6s | %5s |%s %5s\n", "", "", "", "/1000",
-    "typed", "typed", "MCC", "F1", wangYuan ? "    F1 |" : "", "");
+  std::printf("  %7s %5s | %-22s| %6s | %6s | %6s | %6s | %6s | %5s |%s %5s\n", "points",
+    "sigma", "Crease P / R / F1", "false", "corner", "border", "convex", "thin", "Huang",
+    wangYuan ? " WangY |" : "", "s");
+  std::printf("  %7s %5s | %-22s| %6s | %6s | %6s | %6s | %6s | %5s |%s %5s\n", "", "", "",
+    "/1000", "typed", "typed", "typed", "MCC", "F1", wangYuan ? "    F1 |" : "", "");
 }
 
 void PrintMeshSummary(const char* what, const MeshSummary& summary)
@@ -609,6 +622,13 @@ void PrintMeshSummary(const char* what, const MeshSummary& summary)
     Median(summary.FalsePerThousand),
     *std::min_element(summary.ThinMCC.begin(), summary.ThinMCC.end()), Median(summary.ThinMCC),
     summary.F1.size());
+  if (!summary.Convexity.empty())
+  {
+    std::printf("%s: crease points typed convex or concave as the mesh: lowest %.3f, median %.3f "
+                "(%zu rows)\n",
+      what, *std::min_element(summary.Convexity.begin(), summary.Convexity.end()),
+      Median(summary.Convexity), summary.Convexity.size());
+  }
 }
 
 // "20000,100000" -> { 20000, 100000 }; empty on a malformed list.
