@@ -1338,7 +1338,8 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
       {
         this->Reader.Get(row[count - 1], y);
         const double area = vtkMath::Distance2BetweenPoints(x, y) / count;
-        share[r] = area * n.dot(Eigen::Vector3d(x[0] - center[0], x[1] - center[1], x[2] - center[2]));
+        const Eigen::Vector3d away(x[0] - center[0], x[1] - center[1], x[2] - center[2]);
+        share[r] = area * n.dot(away);
       }
       for (int64_t l = first[r]; l < first[r + 1]; ++l)
       {
@@ -1354,7 +1355,8 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
           continue;
         }
         const double across = length > 0.0 ? height / length : 0.0;
-        weight[l] = static_cast<uint8_t>(std::min(254.0, std::round(127.0 * (1.0 - bend + across))));
+        weight[l] =
+          static_cast<uint8_t>(std::min(254.0, std::round(127.0 * (1.0 - bend + across))));
       }
     }
   });
