@@ -648,19 +648,7 @@ void vtkFeaturePointDetector::GlobalLabelCounts(
   const std::vector<long long>& labels, std::vector<long long>& counts) const
 {
   std::vector<long long> all(labels);
-  if (this->IsDistributed())
-  {
-    const int nProcs = this->Controller->GetNumberOfProcesses();
-    long long mine = static_cast<long long>(labels.size());
-    std::vector<long long> sizes(nProcs, 0);
-    this->Controller->AllGather(&mine, sizes.data(), 1);
-    std::vector<vtkIdType> lengths, offsets;
-    const vtkIdType total = GatherLayout(sizes, lengths, offsets);
-    std::vector<vtkIdType> send(labels.begin(), labels.end()), received(total);
-    this->Controller->AllGatherV(send.data(), received.data(),
-      static_cast<vtkIdType>(send.size()), lengths.data(), offsets.data());
-    all.assign(received.begin(), received.end());
-  }
+  this->GatherAll(all);
   std::sort(all.begin(), all.end());
   counts.resize(labels.size());
   for (size_t j = 0; j < labels.size(); ++j)
@@ -675,7 +663,8 @@ int vtkFeaturePointDetector::GetProcessRank() const
   return this->IsDistributed() ? this->Controller->GetLocalProcessId() : 0;
 }
 
-void vtkFeaturePointDetector::GatherAll(std::vector<double>& values) const
+template <typename T>
+void vtkFeaturePointDetector::GatherValues(std::vector<T>& values) const
 {
   if (!this->IsDistributed())
   {
@@ -687,13 +676,24 @@ void vtkFeaturePointDetector::GatherAll(std::vector<double>& values) const
   this->Controller->AllGather(&mine, sizes.data(), 1);
   std::vector<vtkIdType> lengths, offsets;
   const vtkIdType total = GatherLayout(sizes, lengths, offsets);
-  std::vector<double> all(static_cast<size_t>(std::max<vtkIdType>(total, 1)));
-  std::vector<double> send(values);
+  // At least one element each way: an empty vector's data() may be null.
+  std::vector<T> all(static_cast<size_t>(std::max<vtkIdType>(total, 1)));
+  std::vector<T> send(values);
   send.resize(std::max<size_t>(send.size(), 1));
   this->Controller->AllGatherV(send.data(), all.data(), static_cast<vtkIdType>(values.size()),
     lengths.data(), offsets.data());
   all.resize(static_cast<size_t>(total));
   values.swap(all);
+}
+
+void vtkFeaturePointDetector::GatherAll(std::vector<double>& values) const
+{
+  this->GatherValues(values);
+}
+
+void vtkFeaturePointDetector::GatherAll(std::vector<long long>& values) const
+{
+  this->GatherValues(values);
 }
 
 bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods* neighborhoods)

@@ -366,6 +366,7 @@ protected:
    * processes, on every process (collective). Alone: `values` as they are.
    */
   void GatherAll(std::vector<double>& values) const;
+  void GatherAll(std::vector<long long>& values) const;
   // This process's rank in a distributed run; 0 otherwise.
   int GetProcessRank() const;
 
@@ -418,6 +419,8 @@ protected:
   bool BuildHaloLayout();
   template <typename T>
   bool ShareHalo(T* values, int components, int rule);
+  template <typename T>
+  void GatherValues(std::vector<T>& values) const;
   double GlobalBounds[6] = { 0, 0, 0, 0, 0, 0 };
   double GlobalCenter[3] = { 0, 0, 0 };
   std::vector<std::string> StageNames;

@@ -247,22 +247,8 @@ void vtkFeaturePointExtraction::PrepareProcesses(ScoredPoints& scored)
     return this->GlobalMeanWithoutOutliers(values, 10.0);
   };
   p.AllGather = [this](std::vector<uint64_t>& keys) {
-    const int nProcs = this->Controller->GetNumberOfProcesses();
-    long long count = static_cast<long long>(keys.size());
-    std::vector<long long> counts(nProcs, 0);
-    this->Controller->AllGather(&count, counts.data(), 1);
-    std::vector<vtkIdType> lengths, offsets;
-    const vtkIdType total = GatherLayout(counts, lengths, offsets);
-    if (total == 0)
-    {
-      keys.clear();
-      return;
-    }
-    std::vector<long long> local(keys.begin(), keys.end());
-    std::vector<long long> all(total);
-    local.resize(std::max<size_t>(local.size(), 1));
-    this->Controller->AllGatherV(local.data(), all.data(), static_cast<vtkIdType>(keys.size()),
-      lengths.data(), offsets.data());
+    std::vector<long long> all(keys.begin(), keys.end());
+    this->GatherAll(all);
     keys.assign(all.begin(), all.end());
   };
 }
