@@ -27,6 +27,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <tuple>
 #include <vector>
 
 vtkStandardNewMacro(vtkCreaseVotingFeatures);
@@ -923,6 +924,141 @@ private:
   std::deque<CreaseFit> Stored;
 };
 
+// A crease point's hinge as a frame for the sides of the normals around it: the line (point,
+// relative to the crease point, and direction t), the rays into its two half-planes and their
+// normals turned away from each other's ray. A convex crease's outward normals; both inward on
+// a concave one: the two faces take one side together either way.
+struct HingeFrame
+{
+  Eigen::Vector3d Point, T, Ray[2], Face[2];
+  bool Valid = false;
+
+  explicit HingeFrame(const CreaseLine& f)
+  {
+    this->Point = Eigen::Vector3d(f.LinePoint[0], f.LinePoint[1], f.LinePoint[2]);
+    this->T = Eigen::Vector3d(f.LineDirection[0], f.LineDirection[1], f.LineDirection[2]);
+    for (int k = 0; k < 2; ++k)
+    {
+      this->Ray[k] = Eigen::Vector3d(f.Rays[k][0], f.Rays[k][1], f.Rays[k][2]) / RayUnit;
+    }
+    this->Valid = f.HasLine;
+    for (int k = 0; k < 2; ++k)
+    {
+      const Eigen::Vector3d& other = this->Ray[1 - k];
+      this->Face[k] = this->Ray[k].dot(other) * this->Ray[k] - other;
+      const double length = this->Face[k].norm();
+      this->Valid = this->Valid && length > 1e-3;
+      this->Face[k] /= length > 0.0 ? length : 1.0;
+    }
+  }
+
+  // The side of the normal m of a point at y (relative to the crease point) against the face
+  // it belongs to, and how sure that is. Where m turns to the same side of both faces' normals,
+  // that side (|m . normal|, the nearer). Otherwise the face the point lies on (nearer one
+  // half-plane than the other by more than `clear`) when its normal is nearer that face's
+  // normal too (|m . its normal|); else not sure at all (an acute crease's blended normals fit
+  // both faces alike, and a point on one face near the line may see mostly the other).
+  int Side(const Eigen::Vector3d& y, const Eigen::Vector3d& m, double clear, double& sure) const
+  {
+    const double along[2] = { m.dot(this->Face[0]), m.dot(this->Face[1]) };
+    const int nearer = std::abs(along[0]) >= std::abs(along[1]) ? 0 : 1;
+    if ((along[0] < 0.0) == (along[1] < 0.0))
+    {
+      sure = std::abs(along[nearer]);
+      return along[0] < 0.0 ? -1 : 1;
+    }
+    Eigen::Vector3d w = y - this->Point;
+    w -= w.dot(this->T) * this->T;
+    double distance[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      distance[k] = w.dot(this->Ray[k]) > 0.0 ? std::abs(w.dot(this->Face[k])) : w.norm();
+    }
+    const int on = distance[0] <= distance[1] ? 0 : 1;
+    sure = on == nearer && distance[1 - on] - distance[on] > clear ? std::abs(along[nearer]) : 0.0;
+    return along[nearer] < 0.0 ? -1 : 1;
+  }
+
+  // Whether another crease point's frame takes the same side (+1) or the other (-1): its faces
+  // matched to these by their planes (a face between two creases has its rays turned against
+  // each other), by the sign of their normals' agreement; how sure that is (none where the
+  // planes match either way alike or the lines cross).
+  int Relation(const HingeFrame& o, double& sure) const
+  {
+    const double straight[2] = { this->Face[0].dot(o.Face[0]), this->Face[1].dot(o.Face[1]) };
+    const double swapped[2] = { this->Face[0].dot(o.Face[1]), this->Face[1].dot(o.Face[0]) };
+    const double a = std::abs(straight[0]) + std::abs(straight[1]);
+    const double b = std::abs(swapped[0]) + std::abs(swapped[1]);
+    const double agree = a >= b ? straight[0] + straight[1] : swapped[0] + swapped[1];
+    sure = std::min({ std::abs(agree) / 2.0, std::abs(a - b), std::abs(this->T.dot(o.T)) });
+    return agree < 0.0 ? -1 : 1;
+  }
+};
+
+// The orientation's links: no link.
+constexpr uint8_t NoLink = 255;
+
+// Union-find of signed sets: each element's side relative to its set's root, the root the
+// smallest key of the set, so that the sides depend on the spanning forest alone, not on the
+// order it was built in.
+class SignedSets
+{
+public:
+  explicit SignedSets(const std::vector<long long>& keys)
+    : Keys(keys)
+    , Parent(keys.size())
+    , Turn(keys.size(), 0)
+  {
+    std::iota(this->Parent.begin(), this->Parent.end(), int32_t(0));
+  }
+  // The root of i's set, and whether i's side is turned against it.
+  int32_t Find(int32_t i, int& turn)
+  {
+    int32_t root = i;
+    int t = 0;
+    while (this->Parent[root] != root)
+    {
+      t ^= this->Turn[root];
+      root = this->Parent[root];
+    }
+    // Every element on the way straight to the root.
+    for (int32_t j = i, tj = t; this->Parent[j] != j;)
+    {
+      const int32_t next = this->Parent[j];
+      const int32_t tn = tj ^ this->Turn[j];
+      this->Parent[j] = root;
+      this->Turn[j] = static_cast<unsigned char>(tj);
+      j = next;
+      tj = tn;
+    }
+    turn = t;
+    return root;
+  }
+  // Joins the sets of a and b, b's side turned against a's where `turned`; false where they are
+  // one set already.
+  bool Join(int32_t a, int32_t b, bool turned)
+  {
+    int ta = 0, tb = 0;
+    int32_t ra = this->Find(a, ta), rb = this->Find(b, tb);
+    if (ra == rb)
+    {
+      return false;
+    }
+    if (this->Keys[rb] < this->Keys[ra])
+    {
+      std::swap(ra, rb);
+    }
+    this->Parent[rb] = ra;
+    this->Turn[rb] = static_cast<unsigned char>(ta ^ tb ^ (turned ? 1 : 0));
+    return true;
+  }
+
+private:
+  const std::vector<long long>& Keys;
+  std::vector<int32_t> Parent;
+  std::vector<unsigned char> Turn;
+};
+
 struct Scratch
 {
   std::vector<int32_t> Row;
@@ -1030,6 +1166,9 @@ struct CreaseRun
   std::function<long long(vtkIdType)> GlobalId = [](vtkIdType id) {
     return static_cast<long long>(id);
   };
+  // A point's key, the same whatever the pieces and the numbering (the input's order): the
+  // orientation's order among equal weights.
+  std::function<long long(vtkIdType)> Key = [](vtkIdType id) { return static_cast<long long>(id); };
   // Distributed runs: the halo's values of a per-point array (`bytes` bytes a point) replaced by
   // their owners', so that a stage reads its neighbours' exact values, not their neighbours'.
   std::function<void(void*, int)> FromOwners;
@@ -1097,24 +1236,49 @@ struct CreaseRun
   // Step 1a: PCA normals of the `kn` nearest, turned away from the cloud's centre, and sigma^2:
   // the median over the cloud of their quadric's residual per degree of freedom.
   void ComputeNormals(int kn, const double center[3], float* normal);
-  // Step 1b: one consistent orientation of the normals (Hoppe et al. 1992): a minimum spanning
-  // tree over the `kn` nearest, weighted by 1 - |cos| of the normals' angle and the steps'
-  // sine out of the tangent plane, carries each normal's side to the next across the gentlest
-  // bends, along the surface, never across a thin wall. By row: the connected set of points
-  // (unit) it belongs to and its side (+1 or -1, relative to the normal as ComputeNormals()
-  // turned it); by unit: the volume its own points enclose with the centre c on that side,
-  // Sum a (x - c).n (a: each point's share of the surface, pi r^2 / kn with r the distance to
-  // its kn-th nearest, so that the sampling's density does not weigh).
+  // Step 8b: one consistent orientation of the normals (Hoppe et al. 1992), once the creases
+  // are typed: a minimum spanning forest over the `kn` nearest carries each normal's side to
+  // the next across the gentlest bends, along the surface, never across a thin wall. Across a
+  // crease the normals of the kn nearest blend the two faces, and across an acute one (faces
+  // less than 90 degrees apart) the gentlest bend turns the wrong way: the crease points whose
+  // hinge explains their points stand for their hinge (see HingeFrame), and their links carry
+  // its side to the normals around them by the face each belongs to. Each tree then takes the
+  // side that encloses a positive volume (divergence theorem): Sum a (x - c).n over its points,
+  // a each point's share of the surface (pi r^2 / kn, r the distance to its kn-th nearest, so
+  // that the density does not weigh), c the cloud's centre; on a closed surface the outward
+  // side wherever the centre lies, on an open one the side away from the centre's, a
+  // convention. By row: side, +1 or -1 against the normal as ComputeNormals() turned it (for a
+  // hinge's point, against the hinge: +1 a convex crease); own, the side of a hinge point's
+  // normal in its hinge (0 for the other rows). The fits read the normals up to their sign:
+  // only convex or concave turns on it.
   void OrientNormals(int kn, const double center[3], const float* normal,
-    std::vector<int32_t>& unit, std::vector<signed char>& side, std::vector<double>& volume) const;
-  // Each unit's final side, the one that encloses a positive volume (divergence theorem): on a
-  // closed surface the outward side wherever the centre lies; on an open one the side away
-  // from the centre's, a convention. Distributed runs first join the units of all pieces that
-  // share points (by the sides of the halo's points and their owners'). Sets flip[id] where
-  // the final side is against the normal as computed. The crease fits read the normals up to
-  // their sign; only convex or concave turns on it.
-  void ChooseSides(const std::vector<int32_t>& unit, const std::vector<signed char>& side,
-    const std::vector<double>& volume, std::vector<unsigned char>& flip) const;
+    const unsigned char* type, double minAngle, std::vector<signed char>& side,
+    std::vector<signed char>& own) const;
+  // Whether both half-planes of row r's hinge hold points of its fit (within 3 sigma of the
+  // half-plane) nearer the line than two local spacings (of the ks nearest): a hinge whose
+  // half-plane starts further out spans a gap (a slot narrower than the neighbourhood), two
+  // faces that do not meet.
+  bool HingeMeets(vtkIdType r, const HingeFrame& frame, int ks) const;
+  // The crease points that stand for their hinge (type CONVEX or CONCAVE, whose fitted line
+  // votes, explains the points within the noise and meets), as their owners decide.
+  void MarkFrames(int kn, const unsigned char* type, double minAngle, std::vector<int32_t>& frameOf,
+    std::vector<HingeFrame>& frames) const;
+  // The links from each own row to its kn nearest (slot r kn + j): the row they reach (~row
+  // where the link turns the side over) and their weight, 1 - how sure the relation is, in
+  // 1/127 (NoLink where it carries nothing). Two normals: 1 - |cos| of their angle plus the
+  // step's sine out of the tangent plane; the other side of a wall thinner than the
+  // neighbourhood has the same normal up to its sign, so a step that leaves either tangent plane
+  // by more than 30 degrees and more than 3 sigma is no link, nor are normals more than 60
+  // degrees apart. A hinge and a normal, or two hinges: see HingeFrame. Also own and each own
+  // row's share of the volume on the side of its normal (hinge points: of their hinge).
+  void WeighLinks(int kn, const double center[3], const float* normal,
+    const std::vector<int32_t>& frameOf, const std::vector<HingeFrame>& frames,
+    const std::vector<long long>& key, std::vector<int32_t>& target, std::vector<uint8_t>& weight,
+    std::vector<signed char>& own, std::vector<double>& share) const;
+  // Kruskal over the own rows' links in a strict order (weight, then the keys of both ends), into
+  // sets of rows; the links it keeps, 4 numbers each (weight, key from, key to, 1 if turning).
+  void SpanForest(int kn, const std::vector<int32_t>& target, const std::vector<uint8_t>& weight,
+    const std::vector<long long>& key, SignedSets& sets, std::vector<double>& forest) const;
   // Storage of the fits, the sheets and the per-point flags of Stream()'s passes.
   void PrepareFits(vtkPointCloudNeighborhoods* neighborhoods);
   // Links of point id (its row of KNear nearest) across to the neighbouring rows of a sampling in
@@ -1274,247 +1438,379 @@ void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
     std::max(this->RowMedian(residual), NoiseFloor * NoiseFloor * this->D * this->D);
 }
 
-void CreaseRun::OrientNormals(int kn, const double center[3], const float* normal,
-  std::vector<int32_t>& unit, std::vector<signed char>& side, std::vector<double>& volume) const
+bool CreaseRun::HingeMeets(vtkIdType r, const HingeFrame& frame, int ks) const
 {
-  side.assign(static_cast<size_t>(this->Rows), 0); // 0: not reached yet
-  unit.assign(static_cast<size_t>(this->Rows), -1);
-  volume.clear();
-  std::vector<int32_t> members, buffer(static_cast<size_t>(this->K));
-  // The graph, both ways: each row's kn nearest and the rows that count it among theirs. Only
-  // the own points' nearest: a halo point's are the nearest its piece holds, not the cloud's.
-  auto forEachLink = [&](const std::function<void(vtkIdType, vtkIdType)>& visit) {
-    for (vtkIdType r = 0; r < this->Rows; ++r)
+  if (!frame.Valid)
+  {
+    return false;
+  }
+  std::vector<int32_t> buffer(static_cast<size_t>(this->K));
+  const int32_t* row = this->Row(r, buffer.data(), this->KFit);
+  const int count = featurepoints::RowLength(row, this->KFit);
+  const double noise = 3.0 * std::sqrt(this->Variance);
+  const double gap = 2.0 * this->LocalSpacing(r, ks);
+  double x[3], y[3];
+  this->Reader.Get(this->Ids[r], x);
+  double nearest[2] = { std::numeric_limits<double>::infinity(),
+    std::numeric_limits<double>::infinity() };
+  for (int j = -1; j < count; ++j)
+  {
+    Eigen::Vector3d w = -frame.Point;
+    if (j >= 0)
     {
-      const int32_t* row = this->IsOwn(this->Ids[r]) ? this->Row(r, buffer.data(), kn) : nullptr;
-      const int count = row ? featurepoints::RowLength(row, kn) : 0;
-      for (int j = 0; j < count; ++j)
+      this->Reader.Get(row[j], y);
+      w += Eigen::Vector3d(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+    }
+    w -= w.dot(frame.T) * frame.T;
+    for (int k = 0; k < 2; ++k)
+    {
+      const double on = w.dot(frame.Ray[k]);
+      if (on > -noise && std::abs(w.dot(frame.Face[k])) <= noise)
       {
-        if (this->RowOf[row[j]] >= 0)
-        {
-          visit(r, this->RowOf[row[j]]);
-        }
+        nearest[k] = std::min(nearest[k], std::max(on, 0.0));
       }
     }
-  };
-  std::vector<int64_t> first(static_cast<size_t>(this->Rows) + 1, 0);
-  forEachLink([&](vtkIdType r, vtkIdType to) {
-    ++first[r + 1];
-    ++first[to + 1];
-  });
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<int32_t> links(static_cast<size_t>(first.back()));
-  {
-    std::vector<int64_t> next(first.begin(), first.end() - 1);
-    forEachLink([&](vtkIdType r, vtkIdType to) {
-      links[next[r]++] = static_cast<int32_t>(to);
-      links[next[to]++] = static_cast<int32_t>(r);
-    });
   }
+  return nearest[0] <= gap && nearest[1] <= gap;
+}
+
+void CreaseRun::MarkFrames(int kn, const unsigned char* type, double minAngle,
+  std::vector<int32_t>& frameOf, std::vector<HingeFrame>& frames) const
+{
+  // Only a hinge that explains its points within the noise (a corner's is two of its faces, and
+  // the third's points fall on either) and whose faces meet (see HingeMeets()), as the owner of
+  // the point fitted it.
+  std::vector<unsigned char> framed(static_cast<size_t>(this->N), 0);
+  vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const vtkIdType id = this->Ids[r];
+      const CreaseFit& fit = this->Fits[r];
+      const CreaseLine& f = fit.Hinge;
+      const bool crossing = fit.Crossing && f.RSS2 == fit.Cross.RSS2;
+      framed[id] = this->IsOwn(id) &&
+          (type[id] == vtkCreaseVotingFeatures::CONVEX ||
+            type[id] == vtkCreaseVotingFeatures::CONCAVE) &&
+          f.HasLine && this->Gain[r] > MinimumGain && !(f.Angle < minAngle) && !crossing &&
+          f.RSS2 <= MisfitBound(fit.Points - 6) * this->Variance &&
+          this->HingeMeets(r, HingeFrame(f), kn)
+        ? 1
+        : 0;
+    }
+  });
+  if (this->FromOwners)
+  {
+    this->FromOwners(framed.data(), 1);
+  }
+  frameOf.assign(static_cast<size_t>(this->Rows), -1);
+  frames.clear();
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    if (framed[this->Ids[r]])
+    {
+      const HingeFrame frame(this->Fits[r].Hinge);
+      if (frame.Valid)
+      {
+        frameOf[r] = static_cast<int32_t>(frames.size());
+        frames.push_back(frame);
+      }
+    }
+  }
+}
+
+void CreaseRun::WeighLinks(int kn, const double center[3], const float* normal,
+  const std::vector<int32_t>& frameOf, const std::vector<HingeFrame>& frames,
+  const std::vector<long long>& key, std::vector<int32_t>& target, std::vector<uint8_t>& weight,
+  std::vector<signed char>& own, std::vector<double>& share) const
+{
+  const size_t slots = static_cast<size_t>(this->Rows) * static_cast<size_t>(kn);
+  target.assign(slots, -1);
+  weight.assign(slots, NoLink);
+  own.assign(static_cast<size_t>(this->Rows), 0);
+  share.assign(static_cast<size_t>(this->Rows), 0.0);
+  const double clear = 2.0 * std::sqrt(this->Variance);
+  auto quantized = [](double w) {
+    return static_cast<uint8_t>(std::min(254.0, std::round(127.0 * std::max(w, 0.0))));
+  };
   auto normalOf = [&](vtkIdType r) {
     const float* n = normal + 3 * this->Ids[r];
     return Eigen::Vector3d(n[0], n[1], n[2]);
   };
-  // Each link's weight (in parallel): the bend, 1 - |cos| of the normals' angle, plus the step's
-  // sine out of the tangent plane, in 1/127 (NoLink where the link carries nothing). The other
-  // side of a wall thinner than the neighbourhood has the same normal up to its sign: a step
-  // that leaves either point's tangent plane by more than 30 degrees and more than the noise
-  // (3 sigma) explains is no step along the surface. Normals more than 60 degrees apart (up to
-  // their sign): which side of one matches which of the other is a guess.
-  constexpr uint8_t NoLink = 255;
-  std::vector<uint8_t> weight(links.size(), NoLink);
-  // And each own point's share of the volume on the side of its normal, a (x - c).n.
-  std::vector<double> share(static_cast<size_t>(this->Rows), 0.0);
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
     double x[3], y[3];
     std::vector<int32_t> nearest(static_cast<size_t>(this->K));
+    std::vector<std::tuple<long long, int32_t, uint8_t>> links;
     for (vtkIdType r = begin; r < end; ++r)
     {
+      // Only the own points' nearest: a halo point's are the nearest its piece holds, not the
+      // cloud's.
+      if (!this->IsOwn(this->Ids[r]))
+      {
+        continue;
+      }
       const Eigen::Vector3d n = normalOf(r);
       this->Reader.Get(this->Ids[r], x);
       const int32_t* row = this->Row(r, nearest.data(), kn);
       const int count = featurepoints::RowLength(row, kn);
-      if (this->IsOwn(this->Ids[r]) && count > 0)
+      double sure = 0.0;
+      if (count > 0)
       {
         this->Reader.Get(row[count - 1], y);
         const double area = vtkMath::Distance2BetweenPoints(x, y) / count;
         const Eigen::Vector3d away(x[0] - center[0], x[1] - center[1], x[2] - center[2]);
         share[r] = area * n.dot(away);
       }
-      for (int64_t l = first[r]; l < first[r + 1]; ++l)
+      if (frameOf[r] >= 0)
       {
-        const int32_t to = links[l];
-        this->Reader.Get(this->Ids[to], y);
-        const Eigen::Vector3d step(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
-        const Eigen::Vector3d m = normalOf(to);
-        const double length = step.norm();
-        const double height = std::max(std::abs(n.dot(step)), std::abs(m.dot(step)));
-        const double bend = std::abs(n.dot(m));
-        if ((height > 0.5 * length && height * height > 9.0 * this->Variance) || bend < 0.5)
+        own[r] = static_cast<signed char>(
+          frames[frameOf[r]].Side(Eigen::Vector3d::Zero(), n, clear, sure));
+        share[r] *= own[r];
+      }
+      for (int j = 0; j < count; ++j)
+      {
+        const vtkIdType to = this->RowOf[row[j]];
+        if (to < 0)
         {
           continue;
         }
-        const double across = length > 0.0 ? height / length : 0.0;
-        weight[l] =
-          static_cast<uint8_t>(std::min(254.0, std::round(127.0 * (1.0 - bend + across))));
+        const size_t slot = static_cast<size_t>(r) * kn + j;
+        this->Reader.Get(row[j], y);
+        const Eigen::Vector3d step(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+        const Eigen::Vector3d m = normalOf(to);
+        int relation = 1;
+        if (frameOf[r] >= 0 && frameOf[to] >= 0)
+        {
+          // Two frames: their faces matched.
+          relation = frames[frameOf[r]].Relation(frames[frameOf[to]], sure);
+          weight[slot] = sure > 0.5 ? quantized(1.0 - sure) : NoLink;
+        }
+        else if (frameOf[r] >= 0 || frameOf[to] >= 0)
+        {
+          // A frame and a normal: the normal's side on the face it belongs to.
+          const bool mine = frameOf[r] >= 0;
+          const HingeFrame& frame = frames[frameOf[mine ? r : to]];
+          relation = mine ? frame.Side(step, m, clear, sure) : frame.Side(-step, n, clear, sure);
+          weight[slot] = sure > 0.5 ? quantized(1.0 - sure) : NoLink;
+        }
+        else
+        {
+          // Two normals: the bend and the step out of the tangent planes (see OrientNormals()).
+          const double length = step.norm();
+          const double height = std::max(std::abs(n.dot(step)), std::abs(m.dot(step)));
+          const double bend = std::abs(n.dot(m));
+          if ((height > 0.5 * length && height * height > 9.0 * this->Variance) || bend < 0.5)
+          {
+            continue;
+          }
+          const double across = length > 0.0 ? height / length : 0.0;
+          weight[slot] = quantized(1.0 - bend + across);
+          relation = n.dot(m) < 0.0 ? -1 : 1;
+        }
+        target[slot] = static_cast<int32_t>(relation < 0 ? ~to : to);
+      }
+      // The row's links in the order of their ends' keys (see SpanForest()).
+      links.clear();
+      for (int j = 0; j < kn; ++j)
+      {
+        const size_t slot = static_cast<size_t>(r) * kn + j;
+        if (weight[slot] < NoLink)
+        {
+          const int32_t t = target[slot];
+          links.emplace_back(key[t < 0 ? ~t : t], t, weight[slot]);
+        }
+      }
+      std::sort(links.begin(), links.end());
+      for (int j = 0; j < kn; ++j)
+      {
+        const size_t slot = static_cast<size_t>(r) * kn + j;
+        const bool used = j < static_cast<int>(links.size());
+        target[slot] = used ? std::get<1>(links[j]) : -1;
+        weight[slot] = used ? std::get<2>(links[j]) : NoLink;
       }
     }
   });
-  // The tree's frontier: a stack of (row reached, row it comes from) per weight, the lightest
-  // first; a link is offered only when lighter than the best offered to its row so far.
-  std::vector<std::vector<std::pair<int32_t, int32_t>>> frontier(NoLink);
-  std::vector<uint8_t> best(static_cast<size_t>(this->Rows), NoLink);
-  int lightest = NoLink;
-  auto reach = [&](int32_t from) {
-    for (int64_t l = first[from]; l < first[from + 1]; ++l)
-    {
-      const int32_t to = links[l];
-      if (side[to] == 0 && weight[l] < best[to])
-      {
-        best[to] = weight[l];
-        frontier[weight[l]].emplace_back(to, from);
-        lightest = std::min(lightest, static_cast<int>(weight[l]));
-      }
-    }
-  };
-  for (vtkIdType seed = 0; seed < this->Rows; ++seed)
-  {
-    if (side[seed] != 0)
-    {
-      continue;
-    }
-    members.assign(1, static_cast<int32_t>(seed));
-    side[seed] = 1;
-    reach(static_cast<int32_t>(seed));
-    while (true)
-    {
-      while (lightest < NoLink && frontier[lightest].empty())
-      {
-        ++lightest;
-      }
-      if (lightest == NoLink)
-      {
-        break;
-      }
-      const std::pair<int32_t, int32_t> e = frontier[lightest].back();
-      frontier[lightest].pop_back();
-      if (side[e.first] != 0)
-      {
-        continue;
-      }
-      side[e.first] =
-        normalOf(e.second).dot(normalOf(e.first)) < 0.0 ? -side[e.second] : side[e.second];
-      members.push_back(e.first);
-      reach(e.first);
-    }
-    double enclosed = 0.0;
-    for (int32_t r : members)
-    {
-      unit[r] = static_cast<int32_t>(volume.size());
-      enclosed += side[r] * share[r];
-    }
-    volume.push_back(enclosed);
-  }
 }
 
-void CreaseRun::ChooseSides(const std::vector<int32_t>& unit, const std::vector<signed char>& side,
-  const std::vector<double>& volume, std::vector<unsigned char>& flip) const
+void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& target,
+  const std::vector<uint8_t>& weight, const std::vector<long long>& key, SignedSets& sets,
+  std::vector<double>& forest) const
 {
-  // A unit's key: its number here and the process's rank (exact in a double).
-  auto key = [&](int32_t u) { return static_cast<double>(u) * 65536.0 + this->ProcessRank; };
-  // Distributed runs: how often each unit here and its owners' units agree on the halo's sides.
-  std::vector<double> pairs; // (key here, owner's key, agreeing, disagreeing) each
-  if (this->Distributed)
+  // Kruskal: the links by weight, then by their ends' keys (a strict order, the same in any
+  // piece: the forest is then the cloud's one minimum spanning forest). WeighLinks() left each
+  // row's links in the order of their ends' keys; the rows are taken in the order of theirs.
+  std::vector<int32_t> rows;
+  for (vtkIdType r = 0; r < this->Rows; ++r)
   {
-    std::vector<long long> code(static_cast<size_t>(this->N), -1), mine;
-    for (vtkIdType r = 0; r < this->Rows; ++r)
+    if (this->IsOwn(this->Ids[r]))
     {
-      code[this->Ids[r]] = static_cast<long long>(key(unit[r])) * 2 + (side[r] < 0 ? 1 : 0);
+      rows.push_back(static_cast<int32_t>(r));
     }
-    mine = code;
-    this->FromOwners(code.data(), static_cast<int>(sizeof(long long)));
-    std::map<std::pair<double, double>, std::array<double, 2>> counts;
-    for (vtkIdType r = 0; r < this->Rows; ++r)
+  }
+  std::sort(rows.begin(), rows.end(), [&](int32_t a, int32_t b) { return key[a] < key[b]; });
+  std::array<size_t, NoLink + 1> count{};
+  for (uint8_t w : weight)
+  {
+    ++count[w];
+  }
+  // A few passes, each over a range of weights holding about an eighth of the links, so that
+  // the order of only that many is held at a time.
+  const size_t links = weight.size() - count[NoLink];
+  const size_t share = std::max<size_t>(links / 8, 1);
+  auto end = [](int32_t t) { return t < 0 ? ~t : t; };
+  forest.clear();
+  std::vector<uint64_t> order;
+  for (int low = 0; low < NoLink;)
+  {
+    int high = low;
+    size_t held = 0;
+    while (high < NoLink && (held == 0 || held + count[high] <= share))
     {
-      const vtkIdType id = this->Ids[r];
-      if (!this->IsOwn(id) && code[id] >= 0)
+      held += count[high++];
+    }
+    std::array<size_t, NoLink + 1> at{};
+    for (int w = low + 1; w <= high; ++w)
+    {
+      at[w] = at[w - 1] + count[w - 1];
+    }
+    order.resize(held);
+    for (int32_t r : rows)
+    {
+      for (int j = 0; j < kn; ++j)
       {
-        auto& c = counts[{ key(unit[r]), static_cast<double>(code[id] / 2) }];
-        c[(code[id] & 1) == (mine[id] & 1) ? 0 : 1] += 1.0;
-      }
-    }
-    for (const auto& c : counts)
-    {
-      pairs.insert(pairs.end(), { c.first.first, c.first.second, c.second[0], c.second[1] });
-    }
-  }
-  std::vector<double> units; // (key, volume) each
-  for (size_t u = 0; u < volume.size(); ++u)
-  {
-    units.insert(units.end(), { key(static_cast<int32_t>(u)), volume[u] });
-  }
-  this->GatherAll(pairs);
-  this->GatherAll(units);
-  // Every process the same from here: the units joined by their pairs (agreeing or not, by the
-  // majority of the shared points), each set turned to the side of its whole volume.
-  const size_t count = units.size() / 2;
-  std::vector<std::pair<double, size_t>> order(count);
-  for (size_t u = 0; u < count; ++u)
-  {
-    order[u] = { units[2 * u], u };
-  }
-  std::sort(order.begin(), order.end());
-  auto indexOf = [&](double k) {
-    return std::lower_bound(order.begin(), order.end(), std::make_pair(k, size_t(0)))->second;
-  };
-  std::map<std::pair<size_t, size_t>, std::array<double, 2>> joined;
-  for (size_t p = 0; p + 3 < pairs.size(); p += 4)
-  {
-    size_t a = indexOf(pairs[p]), b = indexOf(pairs[p + 1]);
-    auto& c = joined[{ std::min(a, b), std::max(a, b) }];
-    c[0] += pairs[p + 2];
-    c[1] += pairs[p + 3];
-  }
-  std::vector<std::vector<std::pair<size_t, int>>> links(count);
-  for (const auto& j : joined)
-  {
-    const int relation = j.second[0] >= j.second[1] ? 1 : -1;
-    links[j.first.first].emplace_back(j.first.second, relation);
-    links[j.first.second].emplace_back(j.first.first, relation);
-  }
-  std::vector<int> relative(count, 0), final(count, 1);
-  std::vector<size_t> set;
-  for (const auto& start : order)
-  {
-    if (relative[start.second] != 0)
-    {
-      continue;
-    }
-    set.assign(1, start.second);
-    relative[start.second] = 1;
-    double enclosed = 0.0;
-    for (size_t i = 0; i < set.size(); ++i)
-    {
-      const size_t u = set[i];
-      enclosed += relative[u] * units[2 * u + 1];
-      for (const auto& link : links[u])
-      {
-        if (relative[link.first] == 0)
+        const size_t slot = static_cast<size_t>(r) * kn + j;
+        const int w = weight[slot];
+        if (w >= low && w < high)
         {
-          relative[link.first] = relative[u] * link.second;
-          set.push_back(link.first);
+          order[at[w]++] = slot;
         }
       }
     }
-    for (size_t u : set)
+    for (uint64_t slot : order)
     {
-      final[u] = enclosed < 0.0 ? -relative[u] : relative[u];
+      const int32_t r = static_cast<int32_t>(slot / kn);
+      const int32_t t = target[slot];
+      if (sets.Join(r, end(t), t < 0))
+      {
+        forest.insert(forest.end(),
+          { static_cast<double>(weight[slot]), static_cast<double>(key[r]),
+            static_cast<double>(key[end(t)]), t < 0 ? 1.0 : 0.0 });
+      }
     }
+    low = high;
   }
-  flip.assign(static_cast<size_t>(this->N), 0);
+}
+
+void CreaseRun::OrientNormals(int kn, const double center[3], const float* normal,
+  const unsigned char* type, double minAngle, std::vector<signed char>& side,
+  std::vector<signed char>& own) const
+{
+  std::vector<int32_t> frameOf;
+  std::vector<HingeFrame> frames;
+  this->MarkFrames(kn, type, minAngle, frameOf, frames);
+  std::vector<long long> key(static_cast<size_t>(this->Rows));
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
-    flip[this->Ids[r]] = side[r] * final[indexOf(key(unit[r]))] < 0 ? 1 : 0;
+    key[r] = this->Key(this->Ids[r]);
+  }
+  std::vector<int32_t> target;
+  std::vector<uint8_t> weight;
+  std::vector<double> share;
+  this->WeighLinks(kn, center, normal, frameOf, frames, key, target, weight, own, share);
+  // The sides, relative to each tree's root (its smallest key): set by the forest alone. The
+  // trees' volumes, by root (a row; distributed, a place in the keys of all pieces).
+  side.assign(static_cast<size_t>(this->Rows), 1);
+  std::vector<int32_t> root(static_cast<size_t>(this->Rows));
+  std::vector<double> volume;
+  std::vector<long long> all; // distributed: the keys of every piece's forest, sorted
+  {
+    SignedSets sets(key);
+    std::vector<double> forest;
+    this->SpanForest(kn, target, weight, key, sets, forest);
+    std::vector<int32_t>().swap(target);
+    std::vector<uint8_t>().swap(weight);
+    if (!this->Distributed)
+    {
+      for (vtkIdType r = 0; r < this->Rows; ++r)
+      {
+        int turn = 0;
+        root[r] = sets.Find(static_cast<int32_t>(r), turn);
+        side[r] = static_cast<signed char>(turn ? -1 : 1);
+      }
+      volume.assign(static_cast<size_t>(this->Rows), 0.0);
+    }
+    else
+    {
+      // Every piece's forest: the cloud's forest spans their union (a link left out of a piece's
+      // is the heaviest of a cycle there), found again by every process in the same order.
+      this->GatherAll(forest);
+      all = key;
+      for (size_t e = 0; e + 3 < forest.size(); e += 4)
+      {
+        all.push_back(static_cast<long long>(forest[e + 1]));
+        all.push_back(static_cast<long long>(forest[e + 2]));
+      }
+      std::sort(all.begin(), all.end());
+      all.erase(std::unique(all.begin(), all.end()), all.end());
+      auto indexOf = [&](long long k) {
+        return static_cast<size_t>(std::lower_bound(all.begin(), all.end(), k) - all.begin());
+      };
+      std::vector<size_t> order(forest.size() / 4);
+      std::iota(order.begin(), order.end(), size_t(0));
+      std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return std::make_tuple(forest[4 * a], forest[4 * a + 1], forest[4 * a + 2]) <
+          std::make_tuple(forest[4 * b], forest[4 * b + 1], forest[4 * b + 2]);
+      });
+      SignedSets cloud(all);
+      for (size_t e : order)
+      {
+        cloud.Join(static_cast<int32_t>(indexOf(static_cast<long long>(forest[4 * e + 1]))),
+          static_cast<int32_t>(indexOf(static_cast<long long>(forest[4 * e + 2]))),
+          forest[4 * e + 3] > 0.5);
+      }
+      for (vtkIdType r = 0; r < this->Rows; ++r)
+      {
+        int turn = 0;
+        root[r] = cloud.Find(static_cast<int32_t>(indexOf(key[r])), turn);
+        side[r] = static_cast<signed char>(turn ? -1 : 1);
+      }
+      volume.assign(all.size(), 0.0);
+    }
+  }
+  // Each tree's side: the one that encloses a positive volume, summed over every piece.
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    if (this->IsOwn(this->Ids[r]))
+    {
+      volume[root[r]] += side[r] * share[r];
+    }
+  }
+  if (this->Distributed)
+  {
+    std::vector<double> pairs;
+    for (size_t v = 0; v < volume.size(); ++v)
+    {
+      if (volume[v] != 0.0)
+      {
+        pairs.insert(pairs.end(), { static_cast<double>(all[v]), volume[v] });
+      }
+    }
+    this->GatherAll(pairs);
+    std::fill(volume.begin(), volume.end(), 0.0);
+    for (size_t p = 0; p + 1 < pairs.size(); p += 2)
+    {
+      const auto at = std::lower_bound(all.begin(), all.end(), static_cast<long long>(pairs[p]));
+      if (at != all.end() && *at == static_cast<long long>(pairs[p]))
+      {
+        volume[static_cast<size_t>(at - all.begin())] += pairs[p + 1];
+      }
+    }
+  }
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    if (volume[root[r]] < 0.0)
+    {
+      side[r] = static_cast<signed char>(-side[r]);
+    }
   }
 }
 
@@ -3037,6 +3333,12 @@ int vtkCreaseVotingFeatures::RequestData(
   const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
   CreaseRun run(reader, ids, table, k, kNear, this->NumberOfNeighbors, this->MeanSpacing, n);
   run.Thinning = this->ThinFeatures;
+  const bool renumbered = static_cast<vtkIdType>(this->OriginalIds.size()) == n;
+  run.Key = [&](vtkIdType id) {
+    return this->IsDistributed() && !this->Owned.empty()
+      ? this->GlobalId(id)
+      : static_cast<long long>(renumbered ? this->OriginalIds[id] : id);
+  };
   const bool distributed = this->IsDistributed() && !this->Owned.empty();
   if (distributed)
   {
@@ -3081,15 +3383,6 @@ int vtkCreaseVotingFeatures::RequestData(
   this->BeginStage("normals");
   run.ComputeNormals(this->NormalNeighbors, this->CloudCenter(neighborhoods), normal);
   this->NoiseSigma = std::sqrt(run.Variance);
-  std::vector<unsigned char> flip;
-  {
-    std::vector<int32_t> unit;
-    std::vector<signed char> side;
-    std::vector<double> volume;
-    run.OrientNormals(this->NormalNeighbors, this->CloudCenter(neighborhoods), normal, unit,
-      side, volume);
-    run.ChooseSides(unit, side, volume, flip);
-  }
   this->UpdateProgress(0.2);
 
   // Steps 0-4 and the borders' empty sectors, row by row as the k nearest are found.
@@ -3237,13 +3530,31 @@ int vtkCreaseVotingFeatures::RequestData(
   this->ShareHaloValues(m, 1, HALO_FROM_OWNER);
   unsigned char* type = types->GetPointer(0);
   run.ClassifyFeatures(m, border.data(), outward.data(), this->MinimumAngle, BorderNeighbors, type);
+  this->ShareHaloValues(type, 1, HALO_FROM_OWNER);
   // The consistent orientation: the normals turned to it, and convex and concave with them.
-  for (vtkIdType id : ids)
+  this->BeginStage("orientation");
   {
-    if (flip[id])
+    std::vector<signed char> side, own;
+    run.OrientNormals(this->NormalNeighbors, this->CloudCenter(neighborhoods), normal, type,
+      this->MinimumAngle, side, own);
+    // A crease point that stands for its hinge: convex where the hinge keeps its side, its normal
+    // turned by its side in the hinge. Any other point: its normal turned where its side is,
+    // and convex and concave with it.
+    for (vtkIdType r = 0; r < static_cast<vtkIdType>(ids.size()); ++r)
     {
-      std::transform(normal + 3 * id, normal + 3 * id + 3, normal + 3 * id, std::negate<float>());
-      type[id] = type[id] == CONVEX ? CONCAVE : type[id] == CONCAVE ? CONVEX : type[id];
+      const vtkIdType id = ids[r];
+      if (own[r] != 0)
+      {
+        type[id] = side[r] < 0 ? CONCAVE : CONVEX;
+      }
+      else if (side[r] < 0 && (type[id] == CONVEX || type[id] == CONCAVE))
+      {
+        type[id] = type[id] == CONVEX ? CONCAVE : CONVEX;
+      }
+      if ((own[r] < 0) != (side[r] < 0))
+      {
+        std::transform(normal + 3 * id, normal + 3 * id + 3, normal + 3 * id, std::negate<float>());
+      }
     }
   }
   this->ShareHaloValues(type, 1, HALO_FROM_OWNER);

@@ -97,10 +97,15 @@
  *    centroids lie on, against the point's normal, oriented consistently: a minimum spanning
  *    tree over the NormalNeighbors nearest (weights 1 - |cos| of the normals' angle plus the
  *    step's sine out of the tangent plane; no step across a wall thinner than the neighbourhood,
- *    none between normals more than 60 degrees apart) carries each normal's side to the next,
- *    and each connected set takes the side that encloses a positive volume with the bounding
- *    box's centre (outward on a closed surface; on an open sheet the side away from the centre's,
- *    a convention). Then CORNER where the directions of the
+ *    none between normals more than 60 degrees apart) carries each normal's side to the next.
+ *    Across an acute crease the blended normals turn the wrong way, so a crease point whose
+ *    fitted hinge holds (it votes, explains its points, and both half-planes reach the line)
+ *    stands for the hinge: its two faces take one side, and its links give each neighbour's
+ *    normal the side of its face. Each tree takes the side that encloses a positive volume with
+ *    the bounding box's centre (outward on a closed surface; on an open sheet the side away
+ *    from the centre's, a convention). The forest is Kruskal's in a strict order (weight, then
+ *    the points' input order), so any thread or process count gives the same one. Then CORNER
+ *    where the directions of the
  *    feature points around the point run more than one way. A crease point's direction is its
  *    crease line, where its fit explains its neighbourhood and votes; a border point's is along
  *    the border, in the tangent plane of its 50 nearest on the sheet (on a thin wall's rim the
