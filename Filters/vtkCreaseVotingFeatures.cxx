@@ -998,41 +998,37 @@ struct HingeFrame
 // The orientation's links: no link.
 constexpr uint8_t NoLink = 255;
 
-// Union-find of signed sets: each element's side relative to its set's root, the root the
-// smallest key of the set, so that the sides depend on the spanning forest alone, not on the
-// order it was built in.
+// Union-find of signed sets: each element's side relative to its set's root (union by rank,
+// path halving). Which element is the root does not matter: a tree's sides are set by its
+// links, up to one sign that OrientNormals() chooses by the volume.
 class SignedSets
 {
 public:
-  explicit SignedSets(const std::vector<long long>& keys)
-    : Keys(keys)
-    , Parent(keys.size())
-    , Turn(keys.size(), 0)
+  explicit SignedSets(size_t n)
+    : Parent(n)
+    , Turn(n, 0)
+    , Rank(n, 0)
   {
     std::iota(this->Parent.begin(), this->Parent.end(), int32_t(0));
   }
   // The root of i's set, and whether i's side is turned against it.
   int32_t Find(int32_t i, int& turn)
   {
-    int32_t root = i;
     int t = 0;
-    while (this->Parent[root] != root)
+    while (this->Parent[i] != i)
     {
-      t ^= this->Turn[root];
-      root = this->Parent[root];
-    }
-    // Every element on the way straight to the root.
-    for (int32_t j = i, tj = t; this->Parent[j] != j;)
-    {
-      const int32_t next = this->Parent[j];
-      const int32_t tn = tj ^ this->Turn[j];
-      this->Parent[j] = root;
-      this->Turn[j] = static_cast<unsigned char>(tj);
-      j = next;
-      tj = tn;
+      // Halving: i's parent becomes its grandparent, and i's turn the sum of both steps.
+      const int32_t p = this->Parent[i];
+      if (this->Parent[p] != p)
+      {
+        this->Turn[i] = static_cast<unsigned char>(this->Turn[i] ^ this->Turn[p]);
+        this->Parent[i] = this->Parent[p];
+      }
+      t ^= this->Turn[i];
+      i = this->Parent[i];
     }
     turn = t;
-    return root;
+    return i;
   }
   // Joins the sets of a and b, b's side turned against a's where `turned`; false where they are
   // one set already.
@@ -1044,19 +1040,22 @@ public:
     {
       return false;
     }
-    if (this->Keys[rb] < this->Keys[ra])
+    if (this->Rank[ra] < this->Rank[rb])
     {
       std::swap(ra, rb);
     }
     this->Parent[rb] = ra;
     this->Turn[rb] = static_cast<unsigned char>(ta ^ tb ^ (turned ? 1 : 0));
+    if (this->Rank[ra] == this->Rank[rb])
+    {
+      ++this->Rank[ra];
+    }
     return true;
   }
 
 private:
-  const std::vector<long long>& Keys;
   std::vector<int32_t> Parent;
-  std::vector<unsigned char> Turn;
+  std::vector<unsigned char> Turn, Rank;
 };
 
 struct Scratch
@@ -1273,12 +1272,14 @@ struct CreaseRun
   // row's share of the volume on the side of its normal (hinge points: of their hinge).
   void WeighLinks(int kn, const double center[3], const float* normal,
     const std::vector<int32_t>& frameOf, const std::vector<HingeFrame>& frames,
-    const std::vector<long long>& key, std::vector<int32_t>& target, std::vector<uint8_t>& weight,
-    std::vector<signed char>& own, std::vector<double>& share) const;
+    const std::vector<int32_t>& place, const std::vector<long long>& key,
+    std::vector<int32_t>& target, std::vector<uint8_t>& weight, std::vector<signed char>& own,
+    std::vector<double>& share) const;
   // Kruskal over the own rows' links in a strict order (weight, then the keys of both ends), into
   // sets of rows; the links it keeps, 4 numbers each (weight, key from, key to, 1 if turning).
-  void SpanForest(int kn, const std::vector<int32_t>& target, const std::vector<uint8_t>& weight,
-    const std::vector<long long>& key, SignedSets& sets, std::vector<double>& forest) const;
+  void SpanForest(int kn, const std::vector<int32_t>& rows, const std::vector<int32_t>& target,
+    const std::vector<uint8_t>& weight, const std::vector<long long>& key, SignedSets& sets,
+    std::vector<double>& forest) const;
   // Storage of the fits, the sheets and the per-point flags of Stream()'s passes.
   void PrepareFits(vtkPointCloudNeighborhoods* neighborhoods);
   // Links of point id (its row of KNear nearest) across to the neighbouring rows of a sampling in
@@ -1520,10 +1521,13 @@ void CreaseRun::MarkFrames(int kn, const unsigned char* type, double minAngle,
 
 void CreaseRun::WeighLinks(int kn, const double center[3], const float* normal,
   const std::vector<int32_t>& frameOf, const std::vector<HingeFrame>& frames,
-  const std::vector<long long>& key, std::vector<int32_t>& target, std::vector<uint8_t>& weight,
-  std::vector<signed char>& own, std::vector<double>& share) const
+  const std::vector<int32_t>& place, const std::vector<long long>& key,
+  std::vector<int32_t>& target, std::vector<uint8_t>& weight, std::vector<signed char>& own,
+  std::vector<double>& share) const
 {
-  const size_t slots = static_cast<size_t>(this->Rows) * static_cast<size_t>(kn);
+  const size_t placed = static_cast<size_t>(
+    std::count_if(place.begin(), place.end(), [](int32_t p) { return p >= 0; }));
+  const size_t slots = placed * static_cast<size_t>(kn);
   target.assign(slots, -1);
   weight.assign(slots, NoLink);
   own.assign(static_cast<size_t>(this->Rows), 0);
@@ -1573,7 +1577,7 @@ void CreaseRun::WeighLinks(int kn, const double center[3], const float* normal,
         {
           continue;
         }
-        const size_t slot = static_cast<size_t>(r) * kn + j;
+        const size_t slot = static_cast<size_t>(place[r]) * kn + j;
         this->Reader.Get(row[j], y);
         const Eigen::Vector3d step(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
         const Eigen::Vector3d m = normalOf(to);
@@ -1612,7 +1616,7 @@ void CreaseRun::WeighLinks(int kn, const double center[3], const float* normal,
       links.clear();
       for (int j = 0; j < kn; ++j)
       {
-        const size_t slot = static_cast<size_t>(r) * kn + j;
+        const size_t slot = static_cast<size_t>(place[r]) * kn + j;
         if (weight[slot] < NoLink)
         {
           const int32_t t = target[slot];
@@ -1622,7 +1626,7 @@ void CreaseRun::WeighLinks(int kn, const double center[3], const float* normal,
       std::sort(links.begin(), links.end());
       for (int j = 0; j < kn; ++j)
       {
-        const size_t slot = static_cast<size_t>(r) * kn + j;
+        const size_t slot = static_cast<size_t>(place[r]) * kn + j;
         const bool used = j < static_cast<int>(links.size());
         target[slot] = used ? std::get<1>(links[j]) : -1;
         weight[slot] = used ? std::get<2>(links[j]) : NoLink;
@@ -1631,22 +1635,13 @@ void CreaseRun::WeighLinks(int kn, const double center[3], const float* normal,
   });
 }
 
-void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& target,
-  const std::vector<uint8_t>& weight, const std::vector<long long>& key, SignedSets& sets,
-  std::vector<double>& forest) const
+void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
+  const std::vector<int32_t>& target, const std::vector<uint8_t>& weight,
+  const std::vector<long long>& key, SignedSets& sets, std::vector<double>& forest) const
 {
   // Kruskal: the links by weight, then by their ends' keys (a strict order, the same in any
-  // piece: the forest is then the cloud's one minimum spanning forest). WeighLinks() left each
-  // row's links in the order of their ends' keys; the rows are taken in the order of theirs.
-  std::vector<int32_t> rows;
-  for (vtkIdType r = 0; r < this->Rows; ++r)
-  {
-    if (this->IsOwn(this->Ids[r]))
-    {
-      rows.push_back(static_cast<int32_t>(r));
-    }
-  }
-  std::sort(rows.begin(), rows.end(), [&](int32_t a, int32_t b) { return key[a] < key[b]; });
+  // piece: the forest is then the cloud's one minimum spanning forest). The own rows' links lie
+  // in the order of the rows' keys (rows), each row's in the order of their ends' keys.
   std::array<size_t, NoLink + 1> count{};
   for (uint8_t w : weight)
   {
@@ -1673,21 +1668,17 @@ void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& target,
       at[w] = at[w - 1] + count[w - 1];
     }
     order.resize(held);
-    for (int32_t r : rows)
+    for (size_t slot = 0; slot < weight.size(); ++slot)
     {
-      for (int j = 0; j < kn; ++j)
+      const int w = weight[slot];
+      if (w >= low && w < high)
       {
-        const size_t slot = static_cast<size_t>(r) * kn + j;
-        const int w = weight[slot];
-        if (w >= low && w < high)
-        {
-          order[at[w]++] = slot;
-        }
+        order[at[w]++] = slot;
       }
     }
     for (uint64_t slot : order)
     {
-      const int32_t r = static_cast<int32_t>(slot / kn);
+      const int32_t r = rows[slot / kn];
       const int32_t t = target[slot];
       if (sets.Join(r, end(t), t < 0))
       {
@@ -1712,33 +1703,38 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
   {
     key[r] = this->Key(this->Ids[r]);
   }
+  // The own rows in the order of their keys, and each one's place in it (-1: halo).
+  std::vector<int32_t> rows, place(static_cast<size_t>(this->Rows), -1);
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    if (this->IsOwn(this->Ids[r]))
+    {
+      rows.push_back(static_cast<int32_t>(r));
+    }
+  }
+  std::sort(rows.begin(), rows.end(), [&](int32_t a, int32_t b) { return key[a] < key[b]; });
+  for (size_t p = 0; p < rows.size(); ++p)
+  {
+    place[rows[p]] = static_cast<int32_t>(p);
+  }
   std::vector<int32_t> target;
   std::vector<uint8_t> weight;
   std::vector<double> share;
-  this->WeighLinks(kn, center, normal, frameOf, frames, key, target, weight, own, share);
-  // The sides, relative to each tree's root (its smallest key): set by the forest alone. The
-  // trees' volumes, by root (a row; distributed, a place in the keys of all pieces).
+  this->WeighLinks(kn, center, normal, frameOf, frames, place, key, target, weight, own, share);
+  std::vector<int32_t>().swap(place);
+  // The sides, relative to each tree's root: set by the forest alone, up to one sign per tree.
+  // The sets' elements: the rows; distributed, the keys of every piece's forest (sorted).
   side.assign(static_cast<size_t>(this->Rows), 1);
   std::vector<int32_t> root(static_cast<size_t>(this->Rows));
-  std::vector<double> volume;
-  std::vector<long long> all; // distributed: the keys of every piece's forest, sorted
+  SignedSets local(key.size());
+  std::unique_ptr<SignedSets> cloud;
+  std::vector<long long> all;
   {
-    SignedSets sets(key);
     std::vector<double> forest;
-    this->SpanForest(kn, target, weight, key, sets, forest);
+    this->SpanForest(kn, rows, target, weight, key, local, forest);
     std::vector<int32_t>().swap(target);
     std::vector<uint8_t>().swap(weight);
-    if (!this->Distributed)
-    {
-      for (vtkIdType r = 0; r < this->Rows; ++r)
-      {
-        int turn = 0;
-        root[r] = sets.Find(static_cast<int32_t>(r), turn);
-        side[r] = static_cast<signed char>(turn ? -1 : 1);
-      }
-      volume.assign(static_cast<size_t>(this->Rows), 0.0);
-    }
-    else
+    if (this->Distributed)
     {
       // Every piece's forest: the cloud's forest spans their union (a link left out of a piece's
       // is the heaviest of a cycle there), found again by every process in the same order.
@@ -1751,32 +1747,39 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
       }
       std::sort(all.begin(), all.end());
       all.erase(std::unique(all.begin(), all.end()), all.end());
-      auto indexOf = [&](long long k) {
-        return static_cast<size_t>(std::lower_bound(all.begin(), all.end(), k) - all.begin());
-      };
       std::vector<size_t> order(forest.size() / 4);
       std::iota(order.begin(), order.end(), size_t(0));
       std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
         return std::make_tuple(forest[4 * a], forest[4 * a + 1], forest[4 * a + 2]) <
           std::make_tuple(forest[4 * b], forest[4 * b + 1], forest[4 * b + 2]);
       });
-      SignedSets cloud(all);
+      cloud.reset(new SignedSets(all.size()));
+      auto indexOf = [&](double k) {
+        return static_cast<int32_t>(
+          std::lower_bound(all.begin(), all.end(), static_cast<long long>(k)) - all.begin());
+      };
       for (size_t e : order)
       {
-        cloud.Join(static_cast<int32_t>(indexOf(static_cast<long long>(forest[4 * e + 1]))),
-          static_cast<int32_t>(indexOf(static_cast<long long>(forest[4 * e + 2]))),
-          forest[4 * e + 3] > 0.5);
+        cloud->Join(
+          indexOf(forest[4 * e + 1]), indexOf(forest[4 * e + 2]), forest[4 * e + 3] > 0.5);
       }
-      for (vtkIdType r = 0; r < this->Rows; ++r)
-      {
-        int turn = 0;
-        root[r] = cloud.Find(static_cast<int32_t>(indexOf(key[r])), turn);
-        side[r] = static_cast<signed char>(turn ? -1 : 1);
-      }
-      volume.assign(all.size(), 0.0);
     }
   }
+  SignedSets& sets = cloud ? *cloud : local;
+  const std::vector<long long>& elements = cloud ? all : key;
+  auto elementOf = [&](vtkIdType r) {
+    return cloud ? static_cast<int32_t>(
+                     std::lower_bound(all.begin(), all.end(), key[r]) - all.begin())
+                 : static_cast<int32_t>(r);
+  };
+  for (vtkIdType r = 0; r < this->Rows; ++r)
+  {
+    int turn = 0;
+    root[r] = sets.Find(elementOf(r), turn);
+    side[r] = static_cast<signed char>(turn ? -1 : 1);
+  }
   // Each tree's side: the one that encloses a positive volume, summed over every piece.
+  std::vector<double> volume(elements.size(), 0.0);
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
     if (this->IsOwn(this->Ids[r]))
@@ -1805,9 +1808,29 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
       }
     }
   }
+  // A tree that encloses nothing (duplicates alone, points without neighbours): the side of its
+  // smallest key. Its elements are all known here (the rows; distributed, the gathered forest).
+  std::vector<std::pair<long long, int>> smallest;
+  for (size_t i = 0; i < elements.size(); ++i)
+  {
+    int turn = 0;
+    const int32_t top = sets.Find(static_cast<int32_t>(i), turn);
+    if (volume[top] == 0.0)
+    {
+      if (smallest.empty())
+      {
+        smallest.assign(elements.size(), { std::numeric_limits<long long>::max(), 0 });
+      }
+      if (elements[i] < smallest[top].first)
+      {
+        smallest[top] = { elements[i], turn };
+      }
+    }
+  }
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
-    if (volume[root[r]] < 0.0)
+    const double v = volume[root[r]];
+    if (v < 0.0 || (v == 0.0 && smallest[root[r]].second != 0))
     {
       side[r] = static_cast<signed char>(-side[r]);
     }
