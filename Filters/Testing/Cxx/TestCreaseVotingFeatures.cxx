@@ -1,11 +1,13 @@
 // vtkCreaseVotingFeatures, the default detector: the output conventions of every detector, quality
-// on a 90-degree and a 20-degree crease and on a plane, convex and concave on a closed bracket,
-// bit-identical output for any thread count and backend, and bad input (NaN coordinates, too few
-// points) without a crash or a NaN.
+// on a 90-degree and a 20-degree crease and on a plane, convex and concave on a closed bracket and
+// past an acute edge, bit-identical output for any thread count and backend, and bad input (NaN
+// coordinates, too few points) without a crash or a NaN.
 // The held-out quality floors are in Benchmarks (FeaturePoints::QualityFloors).
 #include "FeaturePointsTestRun.h"
 #include "vtkCreaseVotingFeatures.h"
+#include "vtkCellArray.h"
 #include "vtkFeatureModelSource.h"
+#include "vtkMeshFeatureSampler.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -269,6 +271,56 @@ int TestCreaseVotingFeatures(int, char*[])
     FP_CHECK(typed > 0 && same >= 0.95 * typed, "bracket: %ld of %ld crease points typed right",
       same, typed);
     FP_CHECK(concave > 0, "bracket: no concave crease point typed so");
+  }
+
+  // An acute edge (a closed prism whose apex is a 30-degree knife edge): the normals of the 15
+  // nearest blend its faces and turn the short way across it, so the orientation carries the side
+  // across by the crease fits' hinges; every crease is convex.
+  {
+    const double tip = 10.0 * std::tan(15.0 * 3.14159265358979323846 / 180.0);
+    const double corners[3][2] = { { 0.0, 0.0 }, { 10.0, tip }, { 10.0, -tip } };
+    vtkNew<vtkPoints> points;
+    for (int z = 0; z < 2; ++z)
+    {
+      for (const auto& c : corners)
+      {
+        points->InsertNextPoint(c[0], c[1], 10.0 * z);
+      }
+    }
+    // Wound outward: the bottom (0, 1, 2), the top (3, 5, 4), each side's quad in two triangles.
+    const vtkIdType triangles[8][3] = { { 0, 1, 2 }, { 3, 5, 4 }, { 1, 0, 3 }, { 1, 3, 4 },
+      { 2, 1, 4 }, { 2, 4, 5 }, { 0, 2, 5 }, { 0, 5, 3 } };
+    vtkNew<vtkCellArray> cells;
+    for (const auto& t : triangles)
+    {
+      cells->InsertNextCell(3, t);
+    }
+    vtkNew<vtkPolyData> prism;
+    prism->SetPoints(points);
+    prism->SetPolys(cells);
+    vtkNew<vtkMeshFeatureSampler> sampler;
+    sampler->SetInputData(prism);
+    sampler->SetNumberOfPoints(20000);
+    sampler->SetNoiseSigma(0.25);
+    sampler->Update();
+    auto filter = Run(sampler->GetOutput(), true);
+    vtkDataArray* truth = sampler->GetOutput()->GetPointData()->GetArray("TrueFeatureType");
+    vtkDataArray* types = filter->GetOutput()->GetPointData()->GetArray("FeatureType");
+    long typed = 0, convex = 0;
+    for (vtkIdType i = 0; truth && types && i < filter->GetOutput()->GetNumberOfPoints(); ++i)
+    {
+      const int want = static_cast<int>(truth->GetTuple1(i));
+      const int got = static_cast<int>(types->GetTuple1(i));
+      if (want == vtkCreaseVotingFeatures::CONVEX &&
+        (got == vtkCreaseVotingFeatures::CONVEX || got == vtkCreaseVotingFeatures::CONCAVE))
+      {
+        ++typed;
+        convex += got == vtkCreaseVotingFeatures::CONVEX;
+      }
+    }
+    std::printf("%-18s %ld of %ld crease points typed convex\n", "acute prism", convex, typed);
+    FP_CHECK(typed > 0 && convex >= 0.95 * typed, "acute prism: %ld of %ld crease points convex",
+      convex, typed);
   }
 
   // Same output for every backend and thread count.
