@@ -1175,8 +1175,7 @@ struct CreaseRun
   std::function<void(int, const std::function<void(vtkIdType, unsigned char*)>&,
     const std::function<void(vtkIdType, const unsigned char*)>&)>
     RecordsFromOwners;
-  // Distributed runs: this process's rank; every process's values one after the other.
-  int ProcessRank = 0;
+  // Distributed runs: every process's values one after the other.
   std::function<void(std::vector<double>&)> GatherAll = [](std::vector<double>&) {};
   bool IsOwn(vtkIdType id) const { return !this->Own || this->Own[id] != 0; }
   // Whether the current pass leaves row r out: a halo row (whose values come from its owner),
@@ -3386,7 +3385,6 @@ int vtkCreaseVotingFeatures::RequestData(
       this->GlobalLabelCounts(labels, counts);
     };
     run.GlobalId = [&](vtkIdType id) { return this->GlobalId(id); };
-    run.ProcessRank = this->GetProcessRank();
     run.GatherAll = [&](std::vector<double>& values) { this->GatherAll(values); };
     run.RecordsFromOwners = [&](int bytes,
                               const std::function<void(vtkIdType, unsigned char*)>& read,

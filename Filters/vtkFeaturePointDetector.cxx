@@ -658,11 +658,6 @@ void vtkFeaturePointDetector::GlobalLabelCounts(
   }
 }
 
-int vtkFeaturePointDetector::GetProcessRank() const
-{
-  return this->IsDistributed() ? this->Controller->GetLocalProcessId() : 0;
-}
-
 template <typename T>
 void vtkFeaturePointDetector::GatherValues(std::vector<T>& values) const
 {

@@ -367,8 +367,6 @@ protected:
    */
   void GatherAll(std::vector<double>& values) const;
   void GatherAll(std::vector<long long>& values) const;
-  // This process's rank in a distributed run; 0 otherwise.
-  int GetProcessRank() const;
 
   // Distributed runs: the own points (from the input's vtkGhostType) and the cloud's bounds, after
   // the renumbering of PrepareNeighborhoods.
