@@ -37,14 +37,19 @@
  *    farther than 3 sigma from the other plane. There (surfaces crossing), where the hinge
  *    leaves more than the noise explains, the crossing planes are kept instead. Where the
  *    crossing planes come out parallel and several noise widths apart (two sheets the links
- *    did not separate), the fit is redone on P_i's sheet.
+ *    did not separate), the fit is redone on P_i's sheet. Where the heights along the plane
+ *    fall in two groups far apart for their spread and lying over each other (a wall's two
+ *    sides), the k-means starts from those groups: the normals do not vary across a wall.
  * 2. Crease gain G_i = (RSS_Q - RSS_2) / sigma^2: how much better the two planes fit than one
  *    smooth quadric height field over the one-plane fit (RSS: sums of squared distances), in
  *    units of the cloud's noise variance sigma^2. A cylinder or a sphere is explained by the
  *    quadric however curved, a crease is not. sigma^2 is the median over the cloud of the
  *    residual per degree of freedom of the quadric through each point's NormalNeighbors nearest
  *    (curvature is explained at that scale, creases touch few points), never below (0.05 d)^2,
- *    d being the mean spacing.
+ *    d being the mean spacing. Where those nearest hold both sides of a wall thinner than them
+ *    (the same test of heights, after a second split along the plane of the point's group), the
+ *    quadric is fitted to the point's side, its residual scaled to the full neighbourhood's
+ *    degrees of freedom: the wall's thickness is not noise.
  *    At the widest scale, where neither the quadric, the hinge nor the crossing planes explain
  *    the points within the noise, a cubic height field that does (within the bound of its 10
  *    parameters, fitted to at least 100 points) stands for the smooth surface: a free-form face
