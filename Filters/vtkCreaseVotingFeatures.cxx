@@ -1394,10 +1394,11 @@ struct CreaseRun
     std::vector<int32_t>& target, std::vector<uint8_t>& weight, std::vector<signed char>& own,
     std::vector<double>& share) const;
   // Kruskal over the own rows' links in a strict order (weight, then the keys of both ends), into
-  // sets of rows; the links it keeps, 4 numbers each (weight, key from, key to, 1 if turning).
+  // sets of rows; into `forest` (unless null) the links it keeps, 4 numbers each (weight, key
+  // from, key to, 1 if turning).
   void SpanForest(int kn, const std::vector<int32_t>& rows, const std::vector<int32_t>& target,
     const std::vector<uint8_t>& weight, const std::vector<long long>& key, SignedSets& sets,
-    std::vector<double>& forest) const;
+    std::vector<double>* forest) const;
   // Storage of the fits, the sheets and the per-point flags of Stream()'s passes.
   void PrepareFits(vtkPointCloudNeighborhoods* neighborhoods);
   // Links of point id (its row of KNear nearest) across to the neighbouring rows of a sampling in
@@ -1814,7 +1815,7 @@ void CreaseRun::WeighLinks(int kn, const double center[3], const float* normal,
 
 void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
   const std::vector<int32_t>& target, const std::vector<uint8_t>& weight,
-  const std::vector<long long>& key, SignedSets& sets, std::vector<double>& forest) const
+  const std::vector<long long>& key, SignedSets& sets, std::vector<double>* forest) const
 {
   // Kruskal: the links by weight, then by their ends' keys (a strict order, the same in any
   // piece: the forest is then the cloud's one minimum spanning forest). The own rows' links lie
@@ -1829,7 +1830,10 @@ void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
   const size_t links = weight.size() - count[NoLink];
   const size_t share = std::max<size_t>(links / 8, 1);
   auto end = [](int32_t t) { return t < 0 ? ~t : t; };
-  forest.clear();
+  if (forest)
+  {
+    forest->clear();
+  }
   std::vector<uint64_t> order;
   for (int low = 0; low < NoLink;)
   {
@@ -1857,9 +1861,9 @@ void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
     {
       const int32_t r = rows[slot / kn];
       const int32_t t = target[slot];
-      if (sets.Join(r, end(t), t < 0))
+      if (sets.Join(r, end(t), t < 0) && forest)
       {
-        forest.insert(forest.end(),
+        forest->insert(forest->end(),
           { static_cast<double>(weight[slot]), static_cast<double>(key[r]),
             static_cast<double>(key[end(t)]), t < 0 ? 1.0 : 0.0 });
       }
@@ -1908,7 +1912,8 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
   std::vector<long long> all;
   {
     std::vector<double> forest;
-    this->SpanForest(kn, rows, target, weight, key, local, forest);
+    // One process: the sets are the forest's result, its links are not needed (32 bytes a point).
+    this->SpanForest(kn, rows, target, weight, key, local, this->Distributed ? &forest : nullptr);
     std::vector<int32_t>().swap(target);
     std::vector<uint8_t>().swap(weight);
     if (this->Distributed)
