@@ -1249,10 +1249,9 @@ struct CreaseRun
   std::vector<float> Offset;
   std::vector<float> Spread;
   // Distributed runs (see RequestData): by point id, 1 for the piece's own points (null: all);
-  // the upper median of per-row values over the own rows of every process (negative values: none);
-  // labels made to agree
-  // across the pieces (the smallest of each point's copies), true while any changes; how many
-  // own points of all processes carry each label.
+  // the upper median of per-row values over the own rows of every process (a negative value:
+  // the row has none); labels made to agree across the pieces (the smallest of each point's
+  // copies), true while any changes; how many own points of all processes carry each label.
   const unsigned char* Own = nullptr;
   std::function<double(std::vector<double>&)> RowMedian = [](std::vector<double>& values) {
     values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return v < 0.0; }),
