@@ -1366,10 +1366,10 @@ struct CreaseRun
   // convention. By row: side, +1 or -1 against the normal as ComputeNormals() turned it (for a
   // hinge's point, against the hinge: +1 a convex crease); own, the side of a hinge point's
   // normal in its hinge (0 for the other rows). The fits read the normals up to their sign:
-  // only convex or concave turns on it.
+  // only convex or concave turns on it. Frees Gain, which nothing reads after MarkFrames().
   void OrientNormals(int kn, const double center[3], const float* normal,
     const unsigned char* type, double minAngle, std::vector<signed char>& side,
-    std::vector<signed char>& own) const;
+    std::vector<signed char>& own);
   // Whether both half-planes of row r's hinge hold points of its fit (within 3 sigma of the
   // half-plane) nearer the line than two local spacings (of the ks nearest): a hinge whose
   // half-plane starts further out spans a gap (a slot narrower than the neighbourhood), two
@@ -1824,10 +1824,10 @@ void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
   {
     ++count[w];
   }
-  // A few passes, each over a range of weights holding about an eighth of the links, so that
+  // A few passes, each over a range of weights holding about a sixteenth of the links, so that
   // the order of only that many is held at a time.
   const size_t links = weight.size() - count[NoLink];
-  const size_t share = std::max<size_t>(links / 8, 1);
+  const size_t share = std::max<size_t>(links / 16, 1);
   auto end = [](int32_t t) { return t < 0 ? ~t : t; };
   if (forest)
   {
@@ -1873,11 +1873,12 @@ void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
 
 void CreaseRun::OrientNormals(int kn, const double center[3], const float* normal,
   const unsigned char* type, double minAngle, std::vector<signed char>& side,
-  std::vector<signed char>& own) const
+  std::vector<signed char>& own)
 {
   std::vector<int32_t> frameOf;
   std::vector<HingeFrame> frames;
   this->MarkFrames(kn, type, minAngle, frameOf, frames);
+  std::vector<double>().swap(this->Gain); // read last by MarkFrames()
   std::vector<long long> key(static_cast<size_t>(this->Rows));
   for (vtkIdType r = 0; r < this->Rows; ++r)
   {
@@ -1902,10 +1903,10 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
   std::vector<double> share;
   this->WeighLinks(kn, center, normal, frameOf, frames, place, key, target, weight, own, share);
   std::vector<int32_t>().swap(place);
+  std::vector<int32_t>().swap(frameOf);
+  std::vector<HingeFrame>().swap(frames);
   // The sides, relative to each tree's root: set by the forest alone, up to one sign per tree.
   // The sets' elements: the rows; distributed, the keys of every piece's forest (sorted).
-  side.assign(static_cast<size_t>(this->Rows), 1);
-  std::vector<int32_t> root(static_cast<size_t>(this->Rows));
   SignedSets local(key.size());
   std::unique_ptr<SignedSets> cloud;
   std::vector<long long> all;
@@ -1946,6 +1947,8 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
       }
     }
   }
+  side.assign(static_cast<size_t>(this->Rows), 1);
+  std::vector<int32_t> root(static_cast<size_t>(this->Rows));
   SignedSets& sets = cloud ? *cloud : local;
   const std::vector<long long>& elements = cloud ? all : key;
   auto elementOf = [&](vtkIdType r) {
@@ -3734,6 +3737,19 @@ int vtkCreaseVotingFeatures::RequestData(
   unsigned char* type = types->GetPointer(0);
   run.ClassifyFeatures(m, border.data(), outward.data(), this->MinimumAngle, BorderNeighbors, type);
   this->ShareHaloValues(type, 1, HALO_FROM_OWNER);
+  // What neither the orientation nor the thinning reads (the sheets' bits, the fits' scales and
+  // reaches, the rows' gaps and the flags near borders; the borders' directions unless
+  // thinning): 37-49 bytes a point less under the orientation's links, at the end of the
+  // detector.
+  std::vector<uint64_t>().swap(run.Sheets);
+  std::vector<int32_t>().swap(run.Scale);
+  std::vector<float>().swap(run.Reach2);
+  std::vector<float>().swap(run.Across);
+  std::vector<unsigned char>().swap(run.NearBorder);
+  if (!this->ThinFeatures)
+  {
+    std::vector<float>().swap(outward);
+  }
   // The consistent orientation: the normals turned to it, and convex and concave with them.
   this->BeginStage("orientation");
   {
