@@ -36,10 +36,11 @@ namespace
 {
 // sigma is never taken below this fraction of the mean spacing (noise-free clouds).
 constexpr double NoiseFloor = 0.05;
-// A neighbourhood is two sheets (the sides of a wall thinner than it) where the best split of its
-// heights along its plane's normal in two groups puts their means more than SheetSplitSigmas
-// times their pooled RMS apart (16 heights of pure Gaussian noise exceed 6 with probability
-// about 1e-3, a curved patch's about 1e-2) and the groups lie over each other: their centroids,
+// A neighbourhood is two sheets (the sides of a wall thinner than it) where the two-means split
+// of its heights along its plane's normal (SplitHeights) puts the groups' means more than
+// SheetSplitSigmas times their pooled RMS apart (the best split of 16 heights of pure Gaussian
+// noise exceeds 6 with probability about 1e-3, a curved patch's about 1e-2; two-means finds
+// that split or a worse one) and the groups lie over each other: their centroids,
 // projected on the plane, less than SheetOverlap times the projected RMS radius apart. A step's
 // two levels lie side by side (about 1.2 at a step through the point), a wall's sides about 0.3.
 constexpr double SheetSplitSigmas = 6.0;
@@ -482,8 +483,6 @@ Hinge RefineHinge(const std::vector<Eigen::Vector3d>& p, Moments half[2], const 
   return best;
 }
 
-// Two-plane fit of one neighbourhood: p[0] is the point (the origin), nr the normals, variance
-// the noise variance.
 // The split of the points p in two groups by their heights along n: two-means in one dimension
 // (a threshold halfway between the groups' means, from the mean height, until the groups hold
 // still), label[j] 0 for the lower group, 1 for the upper. Returns the squared distance of the
@@ -571,6 +570,8 @@ bool TwoSheets(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& n,
   return offset.squaredNorm() < SheetOverlap * SheetOverlap * spread;
 }
 
+// Two-plane fit of one neighbourhood: p[0] is the point (the origin), nr the normals, variance
+// the noise variance.
 CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& nr,
   double variance, std::vector<unsigned char>& label, std::vector<unsigned char>& next, bool cubic)
 {
@@ -1340,7 +1341,8 @@ struct CreaseRun
   const uint64_t* Sheet(vtkIdType r) const { return this->Sheets.data() + r * this->Words; }
 
   // Step 1a: PCA normals of the `kn` nearest, turned away from the cloud's centre, and sigma^2:
-  // the median over the cloud of their quadric's residual per degree of freedom.
+  // the median over the cloud of their quadric's residual per degree of freedom, on the point's
+  // side of a wall thinner than them (NoiseResidual).
   void ComputeNormals(int kn, const double center[3], float* normal);
   struct NoiseScratch
   {
