@@ -1249,6 +1249,9 @@ struct CreaseRun
   // CastVotes() when Thinning.
   std::vector<float> Offset;
   std::vector<float> Spread;
+  // Per point (3 floats, null: not asked for): the component-wise median of its feet on the
+  // lines that vote for it, from the point. Set by CastVotes().
+  float* Foot = nullptr;
   // Distributed runs (see RequestData): by point id, 1 for the piece's own points (null: all);
   // the upper median of per-row values over the own rows of every process (a negative value:
   // the row has none); labels made to agree across the pieces (the smallest of each point's
@@ -2801,9 +2804,11 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
   const double band = bandWidth * this->D;
   const unsigned char* voter = this->Voter.data();
   vtkSMPThreadLocal<std::vector<double>> scratch;
+  vtkSMPThreadLocal<std::array<std::vector<double>, 3>> feetScratch;
   vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType end) {
     double x[3], y[3];
     std::vector<int32_t> buffer(static_cast<size_t>(this->K));
+    std::array<std::vector<double>, 3>& feet = feetScratch.Local();
     for (vtkIdType i = begin; i < end; ++i)
     {
       const vtkIdType r = this->Order[i];
@@ -2819,6 +2824,10 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
       const uint64_t* sheet = this->Sheet(r);
       std::vector<double>& distances = scratch.Local();
       distances.clear();
+      for (auto& f : feet)
+      {
+        f.clear();
+      }
       int members = 0, in = 0, blind = 0;
       for (int j = -1; j < count && members <= this->Scale[r]; ++j)
       {
@@ -2848,6 +2857,25 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
           {
             distances.push_back(this->HingeAcross(this->RowOf[other], v));
           }
+          if (this->Foot)
+          {
+            // The foot on the line, from the point: the line's point and the step along it, less
+            // the point (all from the member).
+            const CreaseLine& f = this->Fits[this->RowOf[other]].Hinge;
+            double w[3];
+            const double along = FromLine(f, v, w);
+            for (int c = 0; c < 3; ++c)
+            {
+              feet[c].push_back(f.LinePoint[c] + along * f.LineDirection[c] - v[c]);
+            }
+          }
+        }
+      }
+      if (this->Foot && !feet[0].empty())
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          this->Foot[3 * id + c] = static_cast<float>(featurepoints::UpperMedian(feet[c]));
         }
       }
       vote[id] = static_cast<float>(in) / static_cast<float>(members - blind);
@@ -3513,10 +3541,12 @@ int vtkCreaseVotingFeatures::RequestData(
   auto angles = featurepoints::NewZeroArray<vtkFloatArray>("CreaseAngle", 1, n);
   auto types = featurepoints::NewZeroArray<vtkUnsignedCharArray>("FeatureType", 1, n);
   auto mask = featurepoints::NewZeroArray<vtkUnsignedCharArray>("FeatureMask", 1, n);
+  auto offsets =
+    featurepoints::NewZeroArray<vtkFloatArray>("CreaseOffset", 3, this->CreaseOffsets ? n : 0);
   auto finish = [&]() {
     return this->AssembleOutput(input, output,
       { normals.GetPointer(), votes.GetPointer(), gains.GetPointer(), angles.GetPointer(),
-        types.GetPointer() },
+        types.GetPointer(), this->CreaseOffsets ? offsets.GetPointer() : nullptr },
       mask);
   };
 
@@ -3542,6 +3572,7 @@ int vtkCreaseVotingFeatures::RequestData(
   const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
   CreaseRun run(reader, ids, table, k, kNear, this->NumberOfNeighbors, this->MeanSpacing, n);
   run.Thinning = this->ThinFeatures;
+  run.Foot = this->CreaseOffsets ? offsets->GetPointer(0) : nullptr;
   const bool renumbered = static_cast<vtkIdType>(this->OriginalIds.size()) == n;
   run.Key = [&](vtkIdType id) {
     return this->IsDistributed() && !this->Owned.empty()
@@ -3671,6 +3702,10 @@ int vtkCreaseVotingFeatures::RequestData(
   this->BeginStage("vote");
   // A halo point's vote counts fits beyond the piece: its owner's (exact) replaces it.
   this->ShareHaloValues(vote, 1, HALO_FROM_OWNER);
+  if (run.Foot)
+  {
+    this->ShareHaloValues(run.Foot, 3, HALO_FROM_OWNER);
+  }
   this->ApplyThreshold(vote, ids, nullptr, nullptr, m);
   // Hysteresis above the cloud's background: the median vote (most points are not on a crease;
   // on a strongly curved smooth shape every point collects some votes).

@@ -224,6 +224,19 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The point array `CreaseOffset` (float, 3 components): from each point to the crease line
+   * its voters agree on (the component-wise median of its feet on the lines that vote for it),
+   * zero where no line votes for it: a point plus its offset lies on the crease, not spread over
+   * the band (on a 90-degree crease under noise of 0.5 spacings, a median 0.09 d from the true
+   * line where the points lie 1.2 d from it). Default off (12 bytes a point).
+   */
+  vtkSetMacro(CreaseOffsets, bool);
+  vtkGetMacro(CreaseOffsets, bool);
+  vtkBooleanMacro(CreaseOffsets, bool);
+  ///@}
+
+  ///@{
   /** k of the PCA normals that seed the two-plane split. Default 15. */
   vtkSetClampMacro(NormalNeighbors, int, 3, 1000);
   vtkGetMacro(NormalNeighbors, int);
@@ -304,6 +317,7 @@ protected:
   bool MultiScale = true;
   bool Borders = true;
   bool ThinFeatures = false;
+  bool CreaseOffsets = false;
   double NoiseSigma = 0.0;
   double GrowThresholdUsed = 0.0;
 

@@ -938,7 +938,10 @@ int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* out
   full->GetPointData()->PassData(input->GetPointData());
   for (vtkDataArray* a : arrays)
   {
-    full->GetPointData()->AddArray(a);
+    if (a)
+    {
+      full->GetPointData()->AddArray(a);
+    }
   }
   full->GetPointData()->AddArray(mask);
   full->GetPointData()->SetActiveScalars(this->GetScoreArrayName());

@@ -147,7 +147,7 @@ const std::vector<Method>& Methods()
           ? Crease(f)->GetGrowThresholdUsed()
           : std::nan("");
       },
-      true },
+      true, { { "CreaseOffset", 1 } } },
     { "huang2023",
       "the proposed method: SSI and PDI mixed into F, voxel density pre-filter (Huang, Chen, "
       "Zhang, Lu 2023)",
@@ -353,6 +353,12 @@ const std::vector<FilterOption>& FilterOptions()
       [](vtkFeaturePointDetector* f) { return double(!Crease(f)->GetMultiScale()); },
       "every fit and vote uses --crease-k neighbours (without it, where the hinge does not "
       "explain a point's neighbourhood, that point's neighbourhood is halved, down to 20 points)",
+      true },
+    { "crease-offsets", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
+      [](vtkFeaturePointDetector* f, double) { Crease(f)->CreaseOffsetsOn(); },
+      [](vtkFeaturePointDetector* f) { return double(Crease(f)->GetCreaseOffsets()); },
+      "adds the array CreaseOffset: from each point to the crease line that the lines voting for "
+      "it agree on (the point plus it lies on the crease; 0 where no line votes)",
       true },
   };
   return options;

@@ -1,8 +1,8 @@
 // vtkCreaseVotingFeatures, the default detector: the output conventions of every detector, quality
 // on a 90-degree and a 20-degree crease and on a plane, convex and concave on a closed bracket and
-// past an acute edge, the noise and the fits of a plate three spacings thick, bit-identical
-// output for any thread count and backend, and bad input (NaN coordinates, too few points)
-// without a crash or a NaN.
+// past an acute edge, the noise and the fits of a plate three spacings thick, the offsets onto
+// the crease lines, bit-identical output for any thread count and backend, and bad input (NaN
+// coordinates, too few points) without a crash or a NaN.
 // The held-out quality floors are in Benchmarks (FeaturePoints::QualityFloors).
 #include "FeaturePointsTestRun.h"
 #include "vtkCreaseVotingFeatures.h"
@@ -27,6 +27,12 @@
 
 namespace
 {
+double Median(std::vector<double> values)
+{
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 // The crease cases are square patches: their outline is an open border, which the filter marks
 // by default; `borders` off leaves the creases alone to be scored.
 vtkSmartPointer<vtkCreaseVotingFeatures> Run(vtkPolyData* data, bool borders = false)
@@ -92,6 +98,50 @@ int TestCreaseVotingFeatures(int, char*[])
     const long detections = CountSet(Mask(filter->GetOutput()));
     std::printf("%-18s %5ld detections\n", "plane", detections);
     FP_CHECK(detections <= 60, "plane: %ld detections (more than 2 per 1000)", detections);
+  }
+  // CreaseOffset: the 90-degree crease's feature points moved onto the line their voters agree
+  // on lie nearer the true line (the y axis) than the points themselves; off, no such array.
+  {
+    Cloud crease = BentPlanes(30000, 71, 90.0);
+    auto off = Run(crease.Data);
+    FP_CHECK(off->GetOutput()->GetPointData()->GetArray("CreaseOffset") == nullptr,
+      "crease offsets: array present when off");
+    auto filter = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
+    filter->SetBorders(false);
+    filter->CreaseOffsetsOn();
+    filter->SetInputData(crease.Data);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    vtkDataArray* offsets = out->GetPointData()->GetArray("CreaseOffset");
+    FP_CHECK(offsets && offsets->GetNumberOfComponents() == 3 &&
+        offsets->GetNumberOfTuples() == out->GetNumberOfPoints(),
+      "crease offsets: no CreaseOffset array of 3 components");
+    FP_CHECK(AllFinite(out), "crease offsets: NaN or infinity in an output array");
+    vtkUnsignedCharArray* mask = Mask(out);
+    std::vector<double> raw, moved;
+    long none = 0;
+    for (vtkIdType i = 0; offsets && i < out->GetNumberOfPoints(); ++i)
+    {
+      if (!mask->GetValue(i))
+      {
+        continue;
+      }
+      double x[3], v[3];
+      out->GetPoint(i, x);
+      offsets->GetTuple(i, v);
+      none += v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0;
+      raw.push_back(std::hypot(x[0], x[2]) / filter->GetMeanSpacing());
+      moved.push_back(std::hypot(x[0] + v[0], x[2] + v[2]) / filter->GetMeanSpacing());
+    }
+    const long count = static_cast<long>(raw.size());
+    const double rawMedian = count ? Median(raw) : 0.0;
+    const double movedMedian = count ? Median(moved) : 0.0;
+    std::printf("crease offsets: %ld feature points (%ld without an offset), median distance to "
+                "the crease %.3f d, moved onto it %.3f d\n",
+      count, none, rawMedian, movedMedian);
+    FP_CHECK(count > 0 && movedMedian < 0.3 && movedMedian < 0.25 * rawMedian,
+      "crease offsets: median %.3f d moved vs %.3f d", movedMedian, rawMedian);
+    FP_CHECK(none <= count / 20, "crease offsets: %ld of %ld without an offset", none, count);
   }
   // Borders: the unit square's outline, typed BORDER; the middle of the square untouched.
   {

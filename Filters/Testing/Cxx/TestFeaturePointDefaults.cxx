@@ -90,6 +90,7 @@ const std::vector<Property>& Properties()
     FP_CLAMPED(vtkCreaseVotingFeatures, MinimumAngle),
     FP_CLAMPED(vtkCreaseVotingFeatures, GrowThreshold),
     FP_PLAIN(vtkCreaseVotingFeatures, ThinFeatures),
+    FP_PLAIN(vtkCreaseVotingFeatures, CreaseOffsets),
     FP_PLAIN(vtkCreaseVotingFeatures, Borders),
     FP_PLAIN(vtkCreaseVotingFeatures, MultiScale),
     FP_CLAMPED(vtkFeaturePointExtraction, Alpha),
@@ -507,6 +508,10 @@ const std::map<std::string, Expected>& CLIOptions()
     { "single-scale",
       { { "crease" }, [](vtkFeaturePointDetector* f) {
           return std::string(Crease(f)->GetMultiScale() ? "off" : "on");
+        } } },
+    { "crease-offsets",
+      { { "crease" }, [](vtkFeaturePointDetector* f) {
+          return std::string(Crease(f)->GetCreaseOffsets() ? "on" : "off");
         } } },
   };
   return options;
