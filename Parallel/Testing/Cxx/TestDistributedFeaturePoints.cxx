@@ -363,11 +363,12 @@ int main(int argc, char* argv[])
       [&] { return make(vtkCreaseVotingFeatures::New()); }, true, false },
     { "crease (defaults), duplicates", duplicates,
       [&] { return make(vtkCreaseVotingFeatures::New()); }, true, false },
-    { "crease (40 neighbours, thin), duplicates", duplicates,
+    { "crease (40 neighbours, thin, offsets), duplicates", duplicates,
       [&] {
         auto f = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
         f->SetNumberOfNeighbors(40);
         f->ThinFeaturesOn();
+        f->CreaseOffsetsOn();
         return vtkSmartPointer<vtkFeaturePointDetector>(f);
       },
       true, false },
