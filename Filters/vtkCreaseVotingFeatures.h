@@ -228,8 +228,9 @@ public:
    * The point array `CreaseOffset` (float, 3 components): from each point to the crease line
    * its voters agree on (the component-wise median of its feet on the lines that vote for it),
    * zero where no line votes for it: a point plus its offset lies on the crease, not spread over
-   * the band (on a 90-degree crease under noise of 0.5 spacings, a median 0.09 d from the true
-   * line where the points lie 1.2 d from it). Default off (12 bytes a point).
+   * the band (on generated parts under noise of 0.5 spacings, a median 0.09-0.23 spacings from
+   * the true curves where the points lie 1.2-1.4 from them; not between creases closer than about
+   * 4 spacings, whose lines both vote). Default off (12 bytes a point).
    */
   vtkSetMacro(CreaseOffsets, bool);
   vtkGetMacro(CreaseOffsets, bool);
