@@ -78,8 +78,14 @@
  *    fitted again over a longer stretch: the points within 2.5 FitRadius s along the smoothed
  *    curve, each taken in the cross-section of a quadratic (in arc length) fitted to the curve
  *    over twice that stretch, so that the points follow its bend; the fit gives the crease's
- *    offset from that quadratic. Smoothed again (ends fixed), the curves are resampled
- *    StepLength s apart.
+ *    offset from that quadratic. Where the input has the detector's `CreaseOffset` (its
+ *    CreaseOffsets property; `featurepoints --lines` turns it on), each crease vertex then goes to
+ *    the median, across the curve, of the crease points moved by it within the same slab
+ *    (0.75 FitRadius s along the curve either side) and 2 s of the vertex, where at least 4 are:
+ *    the median of many voters' lines places a crease better than one cross-section's fit (on
+ *    the generated parts at sigma 0.5 s, the curves' mean distance to the true ones: median 0.33
+ *    s before, 0.22 after; highest 0.50, then 0.32). Corners, borders and the curves' ends keep their fits. Smoothed
+ *    again (ends fixed), the curves are resampled StepLength s apart.
  *
  * Output port 0: the input points (a vtkPolyData with vertex cells) with all point arrays and
  * `CurveId` (int): the curve of each feature point within 3 s of one (the nearest), -1 elsewhere.

@@ -1803,6 +1803,13 @@ private:
     {
       value.first->Apply(this->Filter, value.second);
     }
+    if (!s.Lines.empty() && Crease(this->Filter) && !Crease(this->Filter)->GetCreaseOffsets())
+    {
+      // The curves place their vertices on the crease points moved by CreaseOffset (see
+      // ExtractCurves, which drops the array again: it was not asked for).
+      Crease(this->Filter)->CreaseOffsetsOn();
+      this->OffsetsForCurves = true;
+    }
     this->Filter->SetOutputFeaturesOnly(false); // the picture needs every point; see WriteFiles
     // Read by pieces: the whole cloud's extent needs no scaled frame (see ReadPiece).
     const int exponent = this->ByPieces ? 0 : ScaledFrameExponent(this->Cloud);
@@ -1881,6 +1888,13 @@ private:
     }
     if (exponent != 0)
     {
+      // The curves run in the scaled frame again (see ExtractCurves): they read the offsets as
+      // the method gave them there.
+      if (vtkDataArray* offsets = this->Result->GetPointData()->GetArray("CreaseOffset"))
+      {
+        this->FrameOffsets = vtk::TakeSmartPointer(offsets->NewInstance());
+        this->FrameOffsets->DeepCopy(offsets);
+      }
       UnscaleResult(this->Result, this->Cloud, *this->M, exponent, s.Input);
     }
     this->CheckInputArrays();
@@ -1930,6 +1944,12 @@ private:
       // units; the result gets their CurveId.
       vtkSmartPointer<vtkPolyData> scaled = ScaledFrame(this->Result, this->Exponent);
       scaled->GetFieldData()->ShallowCopy(this->Result->GetFieldData());
+      // CreaseOffset as the method gave it in that frame (the result's is in the input's units).
+      scaled->GetPointData()->RemoveArray("CreaseOffset");
+      if (this->FrameOffsets)
+      {
+        scaled->GetPointData()->AddArray(this->FrameOffsets);
+      }
       if (vtkDataArray* spacing = this->Result->GetFieldData()->GetArray("MeanSpacing"))
       {
         vtkSmartPointer<vtkDataArray> inFrame = vtk::TakeSmartPointer(spacing->NewInstance());
@@ -1963,6 +1983,10 @@ private:
           length->SetTuple1(c, std::ldexp(length->GetTuple1(c), -this->Exponent));
         }
       }
+    }
+    if (this->OffsetsForCurves)
+    {
+      this->Result->GetPointData()->RemoveArray("CreaseOffset");
     }
     this->Meter->Finish();
     this->Times.emplace_back("curves", Seconds(start));
@@ -2178,6 +2202,8 @@ private:
 #endif
   vtkPolyData* Result = nullptr;
   int Exponent = 0; // the scaled frame's power of two (see ScaledFrameExponent), 0: none
+  bool OffsetsForCurves = false; // CreaseOffset turned on for --lines only (see Extract)
+  vtkSmartPointer<vtkDataArray> FrameOffsets; // CreaseOffset in the scaled frame (see Extract)
   double Grown = std::nan(""); // see Method::GrowThreshold
   vtkNew<vtkFeatureCurveExtraction> Curves;
   std::string PictureFile;

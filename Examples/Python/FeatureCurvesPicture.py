@@ -32,6 +32,7 @@ source.SetNumberOfPoints(points)
 source.SetNoiseFactor(0.5)
 detector = vtkCreaseVotingFeatures()
 detector.SetInputConnection(source.GetOutputPort())
+detector.CreaseOffsetsOn()  # the crease vertices onto the moved crease points, as --lines does
 curves = vtkFeatureCurveExtraction()
 curves.SetInputConnection(detector.GetOutputPort())
 curves.Update()
