@@ -516,8 +516,8 @@ int main(int argc, char* argv[])
       perCurve.push_back(r.PerCurve);
       const std::string row = entry.first + (entry.second.Density > 1.0 ? " denser " : " uniform ") +
         std::to_string(entry.second.Points) + " sigma " + std::to_string(entry.second.Noise);
-      // Every part has crease points: no figure fails, unless the outputs come from a cache
-      // written without the offsets.
+      // Every part has crease points: a missing figure fails (as infinity), unless the outputs
+      // come from a cache, which may have been written without the offsets.
       const double moved = r.MovedDistance >= 0.0 || !cacheDir.empty()
         ? r.MovedDistance
         : std::numeric_limits<double>::infinity();

@@ -229,8 +229,10 @@ public:
    * its voters agree on (the component-wise median of its feet on the lines that vote for it),
    * zero where no line votes for it: a point plus its offset lies on the crease, not spread over
    * the band (on generated parts under noise of 0.5 spacings, a median 0.09-0.23 spacings from
-   * the true curves where the points lie 1.2-1.4 from them; not between creases closer than about
-   * 4 spacings, whose lines both vote). Default off (12 bytes a point).
+   * the true curves where the points lie 1.2-1.4 from them). Not on parallel creases 3 spacings
+   * apart: the lines of both vote and the median falls between them (5 apart: 0.30 spacings).
+   * vtkFeatureCurveExtraction places its crease vertices with it where its input carries it
+   * (`featurepoints --lines` turns it on). Default off (12 bytes a point).
    */
   vtkSetMacro(CreaseOffsets, bool);
   vtkGetMacro(CreaseOffsets, bool);

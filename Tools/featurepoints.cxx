@@ -358,7 +358,8 @@ const std::vector<FilterOption>& FilterOptions()
       [](vtkFeaturePointDetector* f, double) { Crease(f)->CreaseOffsetsOn(); },
       [](vtkFeaturePointDetector* f) { return double(Crease(f)->GetCreaseOffsets()); },
       "adds the array CreaseOffset: from each point to the crease line that the lines voting for "
-      "it agree on (the point plus it lies on the crease; 0 where no line votes)",
+      "it agree on (the point plus it lies on the crease; 0 where no line votes); --lines turns "
+      "it on for the curves' vertices",
       true },
   };
   return options;
