@@ -3,7 +3,7 @@
 # read, extract, write, render to PNG. Keeps the installed package and the example from rotting.
 # With -DPYTHON (the interpreter) and -DPYTHON_DESTINATION, the installed Python package is
 # imported from the prefix alone (no build tree on PYTHONPATH) and runs a reader and a detector.
-#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DINPUT=... [-DXVFB_RUN=...]
+#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DINPUT=... [-DX_COMMAND=sh|run-with-xvfb.sh]
 #         [-DPYTHON=... -DPYTHON_DESTINATION=...] -P this
 foreach(_var BUILD_DIR SOURCE_DIR WORK_DIR INPUT)
   if(NOT DEFINED ${_var})
@@ -33,8 +33,9 @@ list(GET _libs 0 _lib)
 get_filename_component(_lib_dir "${_lib}" DIRECTORY)
 set(_run "${CMAKE_COMMAND}" -E env "LD_LIBRARY_PATH=${_lib_dir}"
   "${WORK_DIR}/build/FeaturePointsExample" "${WORK_DIR}/example.vtp" "${WORK_DIR}/example.png" "${INPUT}")
-if(XVFB_RUN)
-  set(_run "${XVFB_RUN}" -a ${_run})
+if(X_COMMAND)
+  string(REPLACE "|" ";" _x_command "${X_COMMAND}")
+  set(_run ${_x_command} ${_run})
 endif()
 run_step("run the installed example on ${INPUT}" ${_run})
 foreach(_file example.vtp example.png)
