@@ -1,7 +1,8 @@
 // Renders a noisy 90-degree crease offscreen, points coloured by F and feature points highlighted,
 // and compares the picture with the baseline Filters/Testing/Data/Baseline/TestFeaturePointRendering.png
 // (vtkRegressionTestImage: pass -V <baseline> -T <output dir>). Debian's VTK renders through X, so
-// CTest runs this test under an Xvfb of its own (scripts/run-with-xvfb.sh); a VTK built with OSMesa or EGL renders it without X.
+// CTest runs this test under an Xvfb of its own (scripts/run-with-xvfb.sh); a VTK built with
+// OSMesa or EGL renders it without X.
 #include "FeaturePointsTestRun.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
