@@ -20,6 +20,8 @@ if ! command -v Xvfb >/dev/null 2>&1; then
   exit 1
 fi
 dir=$(mktemp -d "${TMPDIR:-/tmp}/run-with-xvfb.XXXXXX") || exit 1
+# The file exists before the server starts: the shell opens it for Xvfb in the background.
+: >"$dir/display"
 Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$dir/display" >"$dir/log" 2>&1 &
 server=$!
 cleanup() {
@@ -43,6 +45,12 @@ while [ "$(wc -l <"$dir/display")" -lt 1 ]; do
   sleep 0.1
 done
 display=$(head -n 1 "$dir/display")
+case "$display" in
+  '' | *[!0-9]*)
+    echo "run-with-xvfb: Xvfb gave no display number ('$display')" >&2
+    exit 1
+    ;;
+esac
 
 DISPLAY=":$display" "$@"
 status=$?
