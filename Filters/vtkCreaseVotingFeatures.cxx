@@ -1491,6 +1491,11 @@ struct CreaseRun
     const unsigned char* band, unsigned char* mask) const;
 
 private:
+  // Whether one plane explains all `count` neighbours of row r (row) within the noise: where the
+  // links split such a neighbourhood, the split is a seam of a random sampling (the 5 nearest of
+  // the points on either side of a line all on their own side), not the sides of a wall, which
+  // lie a wall's thickness apart along the normal.
+  bool Seam(vtkIdType r, const int32_t* row, int count, Scratch& s) const;
   // The members of row r's sheet (row: its neighbours), nearest first, at most `count` of them besides the point,
   // as coordinates relative to the point (P[0] = 0) with their normals.
   void GatherSheet(vtkIdType r, const int32_t* row, int count, const float* normal, Scratch& s) const;
@@ -2103,6 +2108,20 @@ bool OnePlane(const std::vector<Eigen::Vector3d>& p, double variance, CreaseFit&
   return true;
 }
 
+bool CreaseRun::Seam(vtkIdType r, const int32_t* row, int count, Scratch& s) const
+{
+  double x[3], y[3];
+  this->Reader.Get(this->Ids[r], x);
+  s.P.assign(1, Eigen::Vector3d::Zero());
+  for (int j = 0; j < count; ++j)
+  {
+    this->Reader.Get(row[j], y);
+    s.P.emplace_back(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+  }
+  CreaseFit plane;
+  return OnePlane(s.P, this->Variance, plane);
+}
+
 bool CreaseRun::LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int32_t* links)
 {
   const int first = std::min(count, SheetLinks);
@@ -2513,8 +2532,10 @@ void CreaseRun::FitCreases(const float* normal, vtkIdType begin, vtkIdType end)
       const int count = featurepoints::RowLength(row, this->KFit);
       uint64_t* sheet = this->Sheets.data() + r * this->Words;
       // Every neighbour when the sheet holds fewer than 8 points (an isolated point), so that
-      // the fit has something to work on.
-      if (s.Sheet.Reach(this->Ids[r], row, count, this->Links, sheet) < 8)
+      // the fit has something to work on, or when the links split a neighbourhood that one plane
+      // explains (a seam of the sampling, not two sheets).
+      const int reached = s.Sheet.Reach(this->Ids[r], row, count, this->Links, sheet);
+      if (reached < 8 || (reached <= count && this->Seam(r, row, count, s)))
       {
         std::fill(sheet, sheet + this->Words, ~uint64_t(0));
       }

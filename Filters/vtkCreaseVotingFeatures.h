@@ -16,7 +16,9 @@
  *    told apart (thin walls, shells, sheet metal). Where the 5 nearest lie on one line with the
  *    point (a cloud sampled in scan lines), it is also linked to its nearest off that line on
  *    either side, so that the rows form one sheet. N below is the number of such points; with
- *    fewer than 8, the whole neighbourhood is used. Where one plane explains these points
+ *    fewer than 8, the whole neighbourhood is used, and so it is where one plane explains the
+ *    whole neighbourhood within the noise (the bound of step 2b): the links then split it along
+ *    a seam of the sampling, not between a wall's sides. Where one plane explains these points
  *    within the noise (the bound of step 2b), and one plane likewise explains those of each of
  *    its 40 nearest on the sheet, no feature is in view: the point gets that plane and no line
  *    (steps 1-3 are skipped).

@@ -1,8 +1,8 @@
 // vtkCreaseVotingFeatures, the default detector: the output conventions of every detector, quality
 // on a 90-degree and a 20-degree crease and on a plane, convex and concave on a closed bracket and
-// past an acute edge, the noise and the fits of a plate three spacings thick, the offsets onto
-// the crease lines, bit-identical output for any thread count and backend, and bad input (NaN
-// coordinates, too few points) without a crash or a NaN.
+// past an acute edge, a seam of the sampling, the noise and the fits of a plate three spacings
+// thick, the offsets onto the crease lines, bit-identical output for any thread count and
+// backend, and bad input (NaN coordinates, too few points) without a crash or a NaN.
 // The held-out quality floors are in Benchmarks (FeaturePoints::QualityFloors).
 #include "FeaturePointsTestRun.h"
 #include "vtkCreaseVotingFeatures.h"
@@ -246,6 +246,40 @@ int TestCreaseVotingFeatures(int, char*[])
     FP_CHECK(innerFound <= 0.002 * inner, "scan lines: %ld of %ld inner points found", innerFound,
       inner);
     FP_CHECK(creases == 0, "scan lines: %ld crease points", creases);
+  }
+  // A seam: a square grid whose right half lies half a spacing farther off. The 5 nearest of
+  // every point lie on its own side, so the links of the one-sheet neighbourhoods never cross the
+  // seam; one plane explains both sides, which are one sheet, and nothing along the seam is a
+  // border (before that test: 306 of the 3,481 inner points were).
+  {
+    vtkNew<vtkPoints> points;
+    vtkMinimalStandardRandomSequence* noise = vtkMinimalStandardRandomSequence::New();
+    noise->SetSeed(12);
+    for (int i = -40; i <= 40; ++i)
+    {
+      for (int j = -40; j <= 40; ++j)
+      {
+        noise->Next();
+        points->InsertNextPoint(i + (i > 0 ? 0.5 : 0.0), j, 0.04 * (noise->GetValue() - 0.5));
+      }
+    }
+    noise->Delete();
+    vtkNew<vtkPolyData> seam;
+    seam->SetPoints(points);
+    auto filter = Run(seam, true);
+    vtkUnsignedCharArray* mask = Mask(filter->GetOutput());
+    long inner = 0, innerFound = 0;
+    for (vtkIdType i = 0; i < seam->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      seam->GetPoint(i, x);
+      const bool in = std::abs(x[0]) < 30.0 && std::abs(x[1]) < 30.0;
+      inner += in;
+      innerFound += in && mask->GetValue(i) != 0;
+    }
+    std::printf("%-18s %ld of %ld inner points found, %ld in all\n", "seam", innerFound, inner,
+      CountSet(mask));
+    FP_CHECK(innerFound == 0, "seam: %ld of %ld inner points found", innerFound, inner);
   }
   // Scan lines across a 45-degree crease that runs along them, halfway between two rows: both
   // rows beside it are crease points (the vote's band reaches half the rows' gap), none farther.
