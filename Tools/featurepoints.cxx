@@ -1963,6 +1963,8 @@ private:
       this->Result->GetPointData()->AddArray(
         this->Curves->GetOutput()->GetPointData()->GetArray("CurveId"));
       vtkPolyData* curves = this->Curves->GetCurves();
+      double bounds[6];
+      this->Cloud->GetBounds(bounds);
       vtkNew<vtkPoints> points;
       points->SetDataTypeToDouble();
       points->SetNumberOfPoints(curves->GetNumberOfPoints());
@@ -1970,9 +1972,14 @@ private:
       for (vtkIdType i = 0; i < curves->GetNumberOfPoints(); ++i)
       {
         curves->GetPoint(i, x);
-        for (double& c : x)
+        for (int c = 0; c < 3; ++c)
         {
-          c = std::ldexp(c, -this->Exponent);
+          x[c] = std::ldexp(x[c], -this->Exponent);
+          // A vertex that the smoothing put just beyond such a cloud: onto its bounds.
+          if (!std::isfinite(x[c]))
+          {
+            x[c] = std::min(std::max(x[c], bounds[2 * c]), bounds[2 * c + 1]);
+          }
         }
         points->SetPoint(i, x);
       }
@@ -1981,7 +1988,17 @@ private:
       {
         for (vtkIdType c = 0; c < length->GetNumberOfTuples(); ++c)
         {
-          length->SetTuple1(c, std::ldexp(length->GetTuple1(c), -this->Exponent));
+          const double value = std::ldexp(length->GetTuple1(c), -this->Exponent);
+          // A length the input's units cannot hold (a cloud that spans about the largest
+          // double): refused before anything is written, rather than written as infinite.
+          if (!std::isfinite(value))
+          {
+            Fail(ExitFailure,
+              this->S.Input + ": a feature curve is longer than the largest double in the "
+                              "cloud's units (the cloud spans about 1.8e308 or more); scale "
+                              "the cloud down to extract its curves");
+          }
+          length->SetTuple1(c, value);
         }
       }
     }
@@ -2145,10 +2162,12 @@ private:
       "output      %s%s\n", s.Output.c_str(), s.FeaturesOnly ? " (feature points only)" : "");
     if (!s.Lines.empty())
     {
-      std::printf("curves      %lld, total length %.6g (%s)\n",
-        static_cast<long long>(this->Curves->GetNumberOfCurves()),
-        std::ldexp(this->Curves->GetTotalLength(), -this->Exponent),
-        s.Lines.c_str());
+      // The sum of finite lengths can pass the largest double (see ExtractCurves).
+      const double total = std::ldexp(this->Curves->GetTotalLength(), -this->Exponent);
+      char length[64];
+      std::snprintf(length, sizeof(length), std::isfinite(total) ? "%.6g" : "above 1.8e308", total);
+      std::printf("curves      %lld, total length %s (%s)\n",
+        static_cast<long long>(this->Curves->GetNumberOfCurves()), length, s.Lines.c_str());
     }
     if (!s.Screenshot.empty())
     {

@@ -712,6 +712,19 @@ void ExtremeScales()
       std::to_string(unitCurves));
   ::unlink(Path("unit-lines.vtp").c_str());
   ::unlink(Path("big-lines.vtp").c_str());
+  // A box 2^1018 times the generated one: its coordinates (at most 50 x 2^1018, 1.4e308) are
+  // doubles, its edges' lengths (2.8e308) are not. The cloud is found; its curves are refused
+  // with the reason, and no file is written (they were written with infinite lengths).
+  Spit(Path("beyond.xyz"), ModelText(vtkFeatureModelSource::BOX, 6000, std::ldexp(1.0, 1018)));
+  ExpectSuccess("box of 2.8e308", { Path("beyond.xyz"), Path("beyond.vtp") });
+  Check(!HasNonFinite(Path("beyond.vtp")), "box of 2.8e308: NaN or Inf in the output");
+  ::unlink(Path("beyond.vtp").c_str());
+  ExpectFailure("box of 2.8e308, curves",
+    { Path("beyond.xyz"), Path("beyond.vtp"), "--lines", Path("beyond-lines.vtp"), "--quiet" }, 1,
+    "beyond.xyz: a feature curve is longer than the largest double");
+  Check(::access(Path("beyond.vtp").c_str(), F_OK) != 0 &&
+      ::access(Path("beyond-lines.vtp").c_str(), F_OK) != 0,
+    "box of 2.8e308, curves: a file was written");
   // One point at 1e30 among 20,000 on a slab: not "a straight line".
   std::mt19937 rng(8);
   std::uniform_real_distribution<double> u(0.0, 1.0);
