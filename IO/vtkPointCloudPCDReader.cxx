@@ -988,6 +988,16 @@ bool PCDParser::ReadAscii()
         first, rows, f);
     }
   }
+  // A line with values after the last point: POINTS counts fewer points than the file holds.
+  while (this->In.NextLine(line, MaxDataLine))
+  {
+    ++this->Line;
+    if (std::any_of(line.begin(), line.end(), [](char c) { return !IsSpace(c); }))
+    {
+      return this->Fail(
+        "data after the " + std::to_string(n) + " points that POINTS declares", this->Line);
+    }
+  }
   return true;
 }
 

@@ -1206,6 +1206,19 @@ bool PLYParser::Read(vtkPolyData* output, bool createVertexCells, int piece, int
   {
     return false;
   }
+  // ASCII data after the vertices when they are the last element: the header counts fewer
+  // vertices than the file holds.
+  if (this->FileFormat == Format::Ascii && this->NumberOfRows == vertex->Count &&
+    std::next(vertex) == this->Elements.end())
+  {
+    std::string_view line;
+    if (this->NextDataLine(line))
+    {
+      return this->Fail("data after the " + std::to_string(vertex->Count) +
+          " vertices that the header declares (the vertex element is the last)",
+        this->Line);
+    }
+  }
   if (createVertexCells)
   {
     const vtkIdType n = static_cast<vtkIdType>(this->NumberOfRows);

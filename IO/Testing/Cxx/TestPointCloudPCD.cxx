@@ -529,6 +529,8 @@ void Malformed()
       ":10: 'five' is not a number in field 'y' of point 2 of 2" },
     { "short-ascii.pcd", xyz + "WIDTH 3\nPOINTS 3\nDATA ascii\n1 2 3\n4 5 6\n7 8 9",
       "" }, // exactly enough: must read (checked below)
+    { "more-ascii.pcd", xyz + "WIDTH 2\nPOINTS 2\nDATA ascii\n1 2 3\n4 5 6\n\n7 8 9\n",
+      ":12: data after the 2 points that POINTS declares" },
     { "cut-ascii.pcd", xyz + "WIDTH 3\nPOINTS 3\nDATA ascii\n1 2 3\n4 5 6\n\n\n\n\n\n\n",
       "the file ends in point 3 of 3" },
     { "int-range.pcd",

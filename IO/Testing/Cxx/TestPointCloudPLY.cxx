@@ -594,6 +594,9 @@ void TestErrors()
     "too many values", "many.ply", ascii + "end_header\n0 0 0 0\n1 1 1\n", "too many values", 8);
   ExpectError("ASCII file ends early", "short_ascii.ply", ascii + "end_header\n0 0 0\n",
     "ends in vertex 2 of 2");
+  ExpectError("ASCII vertices beyond the count", "more_ascii.ply",
+    ascii + "end_header\n0 0 0\n1 1 1\n\n2 2 2\n",
+    "data after the 2 vertices that the header declares", 11);
   ExpectError(
     "fraction in an integer", "fraction.ply", asciiInt + "0 0 0 1.5\n", "not an integer", 9);
   ExpectError("integer out of range", "range.ply", asciiInt + "0 0 0 300\n", "out of range", 9);
