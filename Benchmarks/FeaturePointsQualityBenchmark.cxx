@@ -78,10 +78,23 @@ struct Method
   std::function<vtkSmartPointer<vtkFeaturePointDetector>()> Make;
 };
 
+// --min-angle: the MinimumAngle of every run of the default detector (negative: its default).
+double CreaseMinimumAngle = -1.0;
+
+vtkSmartPointer<vtkCreaseVotingFeatures> NewCrease()
+{
+  auto crease = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
+  if (CreaseMinimumAngle >= 0.0)
+  {
+    crease->SetMinimumAngle(CreaseMinimumAngle);
+  }
+  return crease;
+}
+
 std::vector<Method> Methods()
 {
   return {
-    { "Crease", [] { return vtkSmartPointer<vtkCreaseVotingFeatures>::New(); } },
+    { "Crease", [] { return NewCrease(); } },
     { "Huang2023", [] { return vtkSmartPointer<vtkFeaturePointExtraction>::New(); } },
   };
 }
@@ -374,7 +387,7 @@ void RunMesh(const std::string& name, vtkPolyData* mesh, const std::vector<vtkId
       // The detectors' warnings (a flat mesh: "All points lie on one plane") as one note.
       CaughtErrors warnings;
       // The default detector: the band's P / R / F1, false points beyond the band, typing.
-      vtkNew<vtkCreaseVotingFeatures> crease;
+      auto crease = NewCrease();
       warnings.Watch(crease);
       vtkDataArray* mask = Mask(crease, coordinates);
       vtkNew<vtkFeaturePointEvaluation> evaluation;
@@ -425,7 +438,7 @@ void RunMesh(const std::string& name, vtkPolyData* mesh, const std::vector<vtkId
         }
       }
       // The thin mask against the row of points nearest each edge: within half a spacing.
-      vtkNew<vtkCreaseVotingFeatures> thin;
+      auto thin = NewCrease();
       thin->ThinFeaturesOn();
       warnings.Watch(thin);
       vtkDataArray* thinMask = Mask(thin, coordinates);
@@ -666,6 +679,8 @@ void Usage(const char* name)
               "  --mesh-sigmas LIST  noise along the normals, in spacings s (default 0,0.25)\n"
               "  --builtin LIST      section 8's meshes by name, comma-separated (default: all)\n"
               "  --no-wang-yuan      leave Wang & Yuan's baseline out of the mesh tables\n"
+              "  --min-angle DEG     the default detector's MinimumAngle in every row (default:\n"
+              "                 the detector's own, 12 degrees)\n"
               "  --save DIR     write each sampled mesh cloud, its labels and detections, as VTP\n"
               "  --check        compare the default detector's figures with their floors; exit 1\n"
               "                 when one is below (floors are set for --scale 0.3 and, for PCEDNet,\n"
@@ -761,6 +776,16 @@ int main(int argc, char* argv[])
     else if (a == "--no-wang-yuan")
     {
       wangYuan = false;
+    }
+    else if (a == "--min-angle" && i + 1 < argc)
+    {
+      char* end = nullptr;
+      CreaseMinimumAngle = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(CreaseMinimumAngle >= 0.0 && CreaseMinimumAngle <= 90.0))
+      {
+        std::fprintf(stderr, "error: --min-angle %s: not an angle from 0 to 90 degrees\n", argv[i]);
+        return EXIT_FAILURE;
+      }
     }
     else
     {
@@ -904,7 +929,7 @@ int main(int argc, char* argv[])
       pcednet.c_str());
     std::vector<Method> pcednetMethods = methods;
     pcednetMethods.insert(pcednetMethods.begin() + 1, { "Thin", [] {
-      auto thin = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
+      auto thin = NewCrease();
       thin->ThinFeaturesOn();
       return vtkSmartPointer<vtkFeaturePointDetector>(thin);
     } });
@@ -1143,7 +1168,7 @@ int main(int argc, char* argv[])
     auto runCase = [&](const std::string& name, vtkPolyData* cloud) {
       const double s = cloud->GetFieldData()->GetArray("CleanMeanSpacing")->GetTuple1(0);
       std::printf("%-26s %7lld |", name.c_str(), static_cast<long long>(cloud->GetNumberOfPoints()));
-      auto filter = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
+      auto filter = NewCrease();
       const double f1 = PrintScores({ "Crease", [&] { return filter; } }, cloud, s, false);
       caseF1.push_back(f1);
       Floor(name + " F1", f1, caseFloor(name + " F1"));
@@ -1268,7 +1293,7 @@ int main(int argc, char* argv[])
               ? 7000.0 / static_cast<double>(vtkFeatureModelSource::GetDefaultNumberOfPoints(model))
               : scale;
             auto cloud = Model(model, fraction, density, noise);
-            auto filter = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
+            auto filter = NewCrease();
             filter->SetInputData(cloud);
             filter->Update();
             vtkDataArray* truth = cloud->GetPointData()->GetArray("GroundTruthType");
