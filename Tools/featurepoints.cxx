@@ -2165,7 +2165,14 @@ private:
       // The sum of finite lengths can pass the largest double (see ExtractCurves).
       const double total = std::ldexp(this->Curves->GetTotalLength(), -this->Exponent);
       char length[64];
-      std::snprintf(length, sizeof(length), std::isfinite(total) ? "%.6g" : "above 1.8e308", total);
+      if (std::isfinite(total))
+      {
+        std::snprintf(length, sizeof(length), "%.6g", total);
+      }
+      else
+      {
+        std::snprintf(length, sizeof(length), "above 1.8e308");
+      }
       std::printf("curves      %lld, total length %s (%s)\n",
         static_cast<long long>(this->Curves->GetNumberOfCurves()), length, s.Lines.c_str());
     }
