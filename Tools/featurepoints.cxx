@@ -2074,19 +2074,46 @@ private:
     this->Meter->Stage("writing");
     const auto start = Clock::now();
     std::string error;
+    // The curves first, into a temporary file beside their target, renamed only once the output
+    // is written too: a failure of either leaves every file as it was.
+    std::string linesFile;
+    if (!s.Lines.empty())
+    {
+      const std::string target = vtkPointCloudIO::WriteTarget(s.Lines);
+      linesFile = vtkPointCloudIO::CreateTemporaryFile(target, error, true);
+      if (linesFile.empty() ||
+        !featurepoints::WriteLines(this->Curves->GetCurves(), linesFile, error,
+          vtkPointCloudIO::GetExtension(s.Lines)))
+      {
+        this->Meter->Finish();
+        RemoveTemporaries(0);
+        // The message names the file asked for, not the temporary one.
+        for (size_t at = linesFile.empty() ? std::string::npos : error.find(linesFile);
+             at != std::string::npos; at = error.find(linesFile, at + s.Lines.size()))
+        {
+          error.replace(at, linesFile.size(), s.Lines);
+        }
+        Fail(ExitFailure, error);
+      }
+    }
     if (!vtkPointCloudIO::Write(written, s.Output, error, "", this->Meter))
     {
       this->Meter->Finish();
       RemoveTemporaries(0);
       Fail(ExitFailure, error);
     }
-    if (!s.Lines.empty() && !featurepoints::WriteLines(this->Curves->GetCurves(), s.Lines, error))
+    if (!linesFile.empty())
     {
-      this->Meter->Finish();
-      RemoveTemporaries(0);
-      // A failed run leaves no output behind.
-      std::remove(vtkPointCloudIO::WriteTarget(s.Output).c_str());
-      Fail(ExitFailure, error);
+      if (std::rename(linesFile.c_str(), vtkPointCloudIO::WriteTarget(s.Lines).c_str()) != 0)
+      {
+        const std::string reason = std::strerror(errno);
+        this->Meter->Finish();
+        RemoveTemporaries(0);
+        // A failed run leaves no output behind.
+        std::remove(vtkPointCloudIO::WriteTarget(s.Output).c_str());
+        Fail(ExitFailure, s.Lines + ": cannot write: " + reason);
+      }
+      vtkPointCloudIO::ReleaseTemporaryFile(linesFile);
     }
     this->Meter->Finish();
     this->Times.emplace_back("write", Seconds(start));

@@ -121,9 +121,10 @@ std::string GetLinesExtensions()
   return ".vtp, .vtk, .csv, .obj";
 }
 
-bool WriteLines(vtkPolyData* curves, const std::string& fileName, std::string& error)
+bool WriteLines(vtkPolyData* curves, const std::string& fileName, std::string& error,
+  const std::string& format)
 {
-  const std::string extension = vtkPointCloudIO::GetExtension(fileName);
+  const std::string extension = format.empty() ? vtkPointCloudIO::GetExtension(fileName) : format;
   if (!CanWriteLines(extension))
   {
     error = fileName + ": cannot write curves in the format of the extension " +
@@ -137,8 +138,8 @@ bool WriteLines(vtkPolyData* curves, const std::string& fileName, std::string& e
   }
   if (extension == "csv")
   {
-    return vtkPointCloudIO::Write(VertexTable(curves), fileName, error);
+    return vtkPointCloudIO::Write(VertexTable(curves), fileName, error, extension);
   }
-  return vtkPointCloudIO::Write(curves, fileName, error);
+  return vtkPointCloudIO::Write(curves, fileName, error, extension);
 }
 }

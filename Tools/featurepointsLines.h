@@ -18,10 +18,12 @@ bool CanWriteLines(const std::string& extension);
 std::string GetLinesExtensions();
 
 /**
- * Writes `curves` (vtkFeatureCurveExtraction's second output) to `fileName`, in the format of its
- * extension. Returns false with a one-line `error` naming the file on failure.
+ * Writes `curves` (vtkFeatureCurveExtraction's second output) to `fileName`, in the format of
+ * `format` (an extension; the file name's own when empty). Returns false with a one-line `error`
+ * naming the file on failure.
  */
-bool WriteLines(vtkPolyData* curves, const std::string& fileName, std::string& error);
+bool WriteLines(vtkPolyData* curves, const std::string& fileName, std::string& error,
+  const std::string& format = "");
 }
 
 #endif
