@@ -409,16 +409,22 @@ void RunMesh(const std::string& name, vtkPolyData* mesh, const std::vector<vtkId
       vtkNew<vtkFeaturePointEvaluation> evaluation;
       evaluation->EvaluateDistances(mask, distance, s);
       const double f1 = evaluation->GetF1();
-      // A smooth mesh has no feature edge: every point found is false, counted below.
+      // A smooth mesh has no feature edge: every point found is false, counted below; the
+      // scores that need a positive print "-".
       const bool featured = edges->GetNumberOfLines() > 0;
-      if (featured)
-      {
-        std::printf(" %.3f / %.3f / %.3f |", evaluation->GetPrecision(), evaluation->GetRecall(), f1);
-      }
-      else
-      {
-        std::printf(" %5s / %5s / %5s |", "-", "-", "-");
-      }
+      auto score = [featured](int width, double value, const char* after) {
+        if (featured)
+        {
+          std::printf(" %*.3f%s", width, value, after);
+        }
+        else
+        {
+          std::printf(" %*s%s", width, "-", after);
+        }
+      };
+      score(5, evaluation->GetPrecision(), " /");
+      score(5, evaluation->GetRecall(), " /");
+      score(5, f1, " |");
       double far = 0.0, falsePoints = 0.0;
       double typeTotal[5] = { 0, 0, 0, 0, 0 }, typeFound[5] = { 0, 0, 0, 0, 0 };
       vtkDataArray* found = crease->GetOutput()->GetPointData()->GetArray("FeatureType");
@@ -475,41 +481,20 @@ void RunMesh(const std::string& name, vtkPolyData* mesh, const std::vector<vtkId
       }
       vtkNew<vtkFeaturePointEvaluation> thinEvaluation;
       thinEvaluation->EvaluateLabels(thinMask, row);
-      if (featured)
-      {
-        std::printf(" %6.3f |", thinEvaluation->GetMCC());
-      }
-      else
-      {
-        std::printf(" %6s |", "-");
-      }
+      score(6, thinEvaluation->GetMCC(), " |");
       // The paper's method and Wang & Yuan's baseline, each at its defaults.
       vtkNew<vtkFeaturePointExtraction> paper;
       warnings.Watch(paper);
       vtkNew<vtkFeaturePointEvaluation> paperEvaluation;
       paperEvaluation->EvaluateDistances(Mask(paper, coordinates), distance, s);
-      if (featured)
-      {
-        std::printf(" %5.3f |", paperEvaluation->GetF1());
-      }
-      else
-      {
-        std::printf(" %5s |", "-");
-      }
+      score(5, paperEvaluation->GetF1(), " |");
       if (wangYuan)
       {
         vtkNew<vtkCurvatureDensityFeatures> baseline;
         warnings.Watch(baseline);
         vtkNew<vtkFeaturePointEvaluation> baselineEvaluation;
         baselineEvaluation->EvaluateDistances(Mask(baseline, coordinates), distance, s);
-        if (featured)
-        {
-          std::printf(" %5.3f |", baselineEvaluation->GetF1());
-        }
-        else
-        {
-          std::printf(" %5s |", "-");
-        }
+        score(5, baselineEvaluation->GetF1(), " |");
       }
       std::printf(" %5.1f\n",
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
