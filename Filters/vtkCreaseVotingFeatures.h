@@ -45,10 +45,12 @@
  * 2. Crease gain G_i = (RSS_Q - RSS_2) / sigma^2: how much better the two planes fit than one
  *    smooth quadric height field over the one-plane fit (RSS: sums of squared distances), in
  *    units of the cloud's noise variance sigma^2. A cylinder or a sphere is explained by the
- *    quadric however curved, a crease is not. sigma^2 is the median over the cloud of the
- *    residual per degree of freedom of the quadric through each point's NormalNeighbors nearest
- *    (curvature is explained at that scale, creases touch few points), never below (0.05 d)^2,
- *    d being the mean spacing. Where those nearest hold both sides of a wall thinner than them
+ *    quadric however curved, a crease is not. sigma^2 comes from the residual per degree of
+ *    freedom of the quadric through each point's NormalNeighbors nearest (curvature is
+ *    explained at that scale): the median over the cloud, or where fewer than half of those
+ *    neighbourhoods are free of features (details a few spacings apart) a lower quantile (1/4,
+ *    1/10 or 1/20, the smallest estimate) scaled by the chi-square law of pure noise to the
+ *    median it implies; never below (0.05 d)^2, d being the mean spacing. Where those nearest hold both sides of a wall thinner than them
  *    (the same test of heights, after a second split along the plane of the point's group), the
  *    quadric is fitted to the point's side, its residual scaled to the full neighbourhood's
  *    degrees of freedom: the wall's thickness is not noise.

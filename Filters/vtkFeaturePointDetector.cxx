@@ -72,12 +72,17 @@ vtkIdType vtkFeaturePointDetector::GlobalSum(vtkIdType value) const
 
 double vtkFeaturePointDetector::GlobalUpperMedian(std::vector<double>& values) const
 {
+  return this->GlobalValueOfShare(values, 0.5);
+}
+
+double vtkFeaturePointDetector::GlobalValueOfShare(std::vector<double>& values, double share) const
+{
   if (!this->IsDistributed())
   {
-    return featurepoints::UpperMedian(values);
+    return featurepoints::ValueOfShare(values, share);
   }
-  // The value of rank n / 2 of the union (a function of the values only, not of their order),
-  // selected a byte at a time: each value has a 64-bit key in the values' order, and each round
+  // The value of rank floor(share n) of the union (a function of the values only, not of their
+  // order), selected a byte at a time: each value has a 64-bit key in the values' order, and each round
   // counts the values whose key starts with the bytes chosen so far by their next byte, the
   // counts summed over the processes. Exact, in 8 rounds, and no process holds more than its own
   // values.
@@ -95,7 +100,8 @@ double vtkFeaturePointDetector::GlobalUpperMedian(std::vector<double>& values) c
     return (u & Sign) ? ~u : (u | Sign);
   };
   uint64_t prefix = 0;
-  long long rank = total / 2;
+  long long rank = std::min(total - 1,
+    static_cast<long long>(std::max(0.0, share) * static_cast<double>(total)));
   for (int shift = 56; shift >= 0; shift -= 8)
   {
     const uint64_t chosen = shift == 56 ? 0 : ~uint64_t(0) << (shift + 8);

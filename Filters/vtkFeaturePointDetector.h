@@ -285,7 +285,8 @@ protected:
    * in) belongs to this process's piece, not to its halo; always true in one process. The
    * Global*() helpers reduce over all processes (every process must call them, in the same
    * order) and are the local figure in one process. GlobalUpperMedian() selects the value of rank
-   * n / 2 by counts summed over the processes (no process gathers the values). CloudBounds()/CloudCenter(): the bounds of the valid points of the whole cloud
+   * n / 2 by counts summed over the processes (no process gathers the values),
+   * GlobalValueOfShare() that of rank floor(share n) (at most n - 1). CloudBounds()/CloudCenter(): the bounds of the valid points of the whole cloud
    * (neighborhoods->GetBounds()/GetCenter() in one process).
    */
   bool IsDistributed() const;
@@ -293,6 +294,7 @@ protected:
   double GlobalSum(double value) const;
   vtkIdType GlobalSum(vtkIdType value) const;
   double GlobalUpperMedian(std::vector<double>& values) const;
+  double GlobalValueOfShare(std::vector<double>& values, double share) const;
   const double* CloudBounds(vtkPointCloudNeighborhoods* neighborhoods) const;
   const double* CloudCenter(vtkPointCloudNeighborhoods* neighborhoods) const;
   /** The number of own points among `ids`. */

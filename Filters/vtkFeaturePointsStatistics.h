@@ -42,6 +42,22 @@ T UpperMedian(std::vector<T>& values, T empty = T(0))
 }
 
 /**
+ * The value of rank floor(share n) of the n `values` (at most n - 1; share 1/2: the upper
+ * median), or `empty` when there is no value. `values` are reordered.
+ */
+template <typename T>
+T ValueOfShare(std::vector<T>& values, double share, T empty = T(0))
+{
+  if (values.empty())
+  {
+    return empty;
+  }
+  const std::size_t rank = std::min(values.size() - 1,
+    static_cast<std::size_t>(std::max(0.0, share) * static_cast<double>(values.size())));
+  return ValueOfRank(values, rank);
+}
+
+/**
  * The median: the middle value, or the mean of the two middle values for an even count. `values`
  * (not empty) are reordered.
  */
