@@ -1611,6 +1611,7 @@ double CreaseRun::NoiseVariance(std::vector<double>& residual, const std::vector
     {
       continue;
     }
+    scaled.resize(raw.size()); // RowQuantile() drops the rows without a figure
     for (size_t r = 0; r < raw.size(); ++r)
     {
       scaled[r] =
@@ -1624,6 +1625,7 @@ double CreaseRun::NoiseVariance(std::vector<double>& residual, const std::vector
   }
   // Past the median's breakdown: fewer than half of the rows that only noise would put below
   // the median it implies, so that most rows see a feature.
+  scaled.resize(residual.size());
   for (size_t r = 0; r < residual.size(); ++r)
   {
     scaled[r] = residual[r] < 0.0 ? -1.0 : (residual[r] <= smallest ? 1.0 : 0.0);
