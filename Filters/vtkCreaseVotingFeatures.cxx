@@ -1255,7 +1255,8 @@ struct CreaseRun
   // Distributed runs (see RequestData): by point id, 1 for the piece's own points (null: all);
   // the value of rank floor(share n) of the n per-row values over the own rows of every process
   // (a negative value: the row has none), and their count n; labels made to agree across the
-  // pieces (the smallest of each point's copies), true while any changes; how many own points of all processes carry each label.
+  // pieces (the smallest of each point's copies), true while any changes; how many own points
+  // of all processes carry each label.
   const unsigned char* Own = nullptr;
   std::function<double(std::vector<double>&, double)> RowQuantile =
     [](std::vector<double>& values, double share) {
@@ -1584,8 +1585,8 @@ void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
       rowDof[r] = static_cast<signed char>(std::min(dof, 127));
     }
   });
-  this->Variance = std::max(
-    this->NoiseVariance(residual, raw, rowDof, kn + 1 - 6), NoiseFloor * NoiseFloor * this->D * this->D);
+  const double floor = NoiseFloor * NoiseFloor * this->D * this->D;
+  this->Variance = std::max(this->NoiseVariance(residual, raw, rowDof, kn + 1 - 6), floor);
 }
 
 double CreaseRun::NoiseVariance(std::vector<double>& residual, const std::vector<double>& raw,
@@ -1628,15 +1629,9 @@ double CreaseRun::NoiseVariance(std::vector<double>& residual, const std::vector
   scaled.resize(residual.size());
   for (size_t r = 0; r < residual.size(); ++r)
   {
-    scaled[r] = residual[r] < 0.0 ? -1.0 : (residual[r] <= smallest ? 1.0 : 0.0);
+    scaled[r] = residual[r] >= 0.0 && residual[r] <= smallest ? 0.0 : -1.0;
   }
-  const long long rows = this->CountRows(scaled);
-  for (double& v : scaled)
-  {
-    v = v > 0.5 ? 1.0 : -1.0;
-  }
-  const long long below = this->CountRows(scaled);
-  return 4 * below < rows ? smallest : median;
+  return 4 * this->CountRows(scaled) < this->CountRows(residual) ? smallest : median;
 }
 
 double CreaseRun::NoiseResidual(const double* q, int count, const double nrm[3], double lambda,
@@ -1697,7 +1692,6 @@ double CreaseRun::NoiseResidual(const double* q, int count, const double nrm[3],
   {
     return -1.0; // too few for the quadric: no figure
   }
-
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& y : s.P)
   {

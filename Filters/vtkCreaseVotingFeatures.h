@@ -50,10 +50,11 @@
  *    explained at that scale): the median over the cloud, or where fewer than half of those
  *    neighbourhoods are free of features (details a few spacings apart) a lower quantile (1/4,
  *    1/10 or 1/20, the smallest estimate) scaled by the chi-square law of pure noise to the
- *    median it implies; never below (0.05 d)^2, d being the mean spacing. Where those nearest hold both sides of a wall thinner than them
- *    (the same test of heights, after a second split along the plane of the point's group), the
- *    quadric is fitted to the point's side, its residual scaled to the full neighbourhood's
- *    degrees of freedom: the wall's thickness is not noise.
+ *    median it implies; never below (0.05 d)^2, d being the mean spacing. Where those nearest
+ *    hold both sides of a wall thinner than them (the same test of heights, after a second
+ *    split along the plane of the point's group), the quadric is fitted to the point's side,
+ *    its residual scaled to the full neighbourhood's degrees of freedom: the wall's thickness
+ *    is not noise.
  *    At the widest scale, where neither the quadric, the hinge nor the crossing planes explain
  *    the points within the noise, a cubic height field that does (within the bound of its 10
  *    parameters, fitted to at least 100 points) stands for the smooth surface: a free-form face

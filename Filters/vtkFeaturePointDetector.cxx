@@ -82,10 +82,10 @@ double vtkFeaturePointDetector::GlobalValueOfShare(std::vector<double>& values, 
     return featurepoints::ValueOfShare(values, share);
   }
   // The value of rank floor(share n) of the union (a function of the values only, not of their
-  // order), selected a byte at a time: each value has a 64-bit key in the values' order, and each round
-  // counts the values whose key starts with the bytes chosen so far by their next byte, the
-  // counts summed over the processes. Exact, in 8 rounds, and no process holds more than its own
-  // values.
+  // order), selected a byte at a time: each value has a 64-bit key in the values' order, and
+  // each round counts the values whose key starts with the bytes chosen so far by their next
+  // byte, the counts summed over the processes. Exact, in 8 rounds, and no process holds more
+  // than its own values.
   long long local = static_cast<long long>(values.size()), total = 0;
   this->Controller->AllReduce(&local, &total, 1, vtkCommunicator::SUM_OP);
   if (total == 0)

@@ -286,7 +286,8 @@ protected:
    * Global*() helpers reduce over all processes (every process must call them, in the same
    * order) and are the local figure in one process. GlobalUpperMedian() selects the value of rank
    * n / 2 by counts summed over the processes (no process gathers the values),
-   * GlobalValueOfShare() that of rank floor(share n) (at most n - 1). CloudBounds()/CloudCenter(): the bounds of the valid points of the whole cloud
+   * GlobalValueOfShare() that of rank floor(share n) (at most n - 1).
+   * CloudBounds()/CloudCenter(): the bounds of the valid points of the whole cloud
    * (neighborhoods->GetBounds()/GetCenter() in one process).
    */
   bool IsDistributed() const;

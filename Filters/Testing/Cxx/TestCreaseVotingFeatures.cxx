@@ -414,7 +414,7 @@ int TestCreaseVotingFeatures(int, char*[])
   // points lie within 2 spacings of an edge and the 15 nearest of most points see one. The noise
   // is then taken from a lower quantile of the rows' residuals, not their median, which measured
   // the edges. Measured, with the median: clean sigma/d 0.363, F1 0.755; sigma = 0.25 s: 0.438,
-  // F1 0.685. Now: 0.050 (the floor), F1 0.858; 0.313, F1 0.798.
+  // F1 0.685. Now: 0.050 (the floor), F1 0.858; 0.314, F1 0.798.
   {
     vtkNew<vtkPoints> points;
     vtkNew<vtkCellArray> cells;
