@@ -59,8 +59,6 @@ const double AcrossNormals = std::cos(vtkMath::RadiansFromDegrees(30.0));
 const double CornerTurn = std::cos(vtkMath::RadiansFromDegrees(45.0)); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
 const double BridgeCone = std::cos(vtkMath::RadiansFromDegrees(30.0)); // an end joins what lies in this cone
-// Ends facing each other within this are bridged along a crease from any distance.
-const double FacingCone = std::cos(vtkMath::RadiansFromDegrees(15.0));
 constexpr int SmoothingPasses = 20;
 constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's points
 constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
@@ -1161,7 +1159,6 @@ void CurveRun::BridgeAlongCreases()
   {
     double Length;
     size_t A, B;
-    bool Straight; // facing within FacingCone (a crease's gap), else within BridgeCone
   };
   std::vector<Gap> gaps;
   for (size_t a = 0; a < ends.size(); ++a)
@@ -1173,7 +1170,7 @@ void CurveRun::BridgeAlongCreases()
       const double facing = std::min(ab.dot(directions[a]), -ab.dot(directions[b]));
       if (length > 0.0 && facing >= BridgeCone * length)
       {
-        gaps.push_back({ length, a, b, facing >= FacingCone * length });
+        gaps.push_back({ length, a, b });
       }
     }
   }
@@ -1197,9 +1194,8 @@ void CurveRun::BridgeAlongCreases()
     const int steps = static_cast<int>(std::ceil(gap.Length / this->H));
     const V3 middle = a + 0.5 * gap.Length * t;
     Eigen::Vector2d u;
-    const Bend whole =
-      gap.Straight ? this->BendAt(middle, t, 0.5 * gap.Length + this->R, u, false) : Bend();
-    bool crease = gap.Straight && whole.Valid && whole.Angle >= std::asin(MinimumCreaseAngle) &&
+    const Bend whole = this->BendAt(middle, t, 0.5 * gap.Length + this->R, u, false);
+    bool crease = whole.Valid && whole.Angle >= std::asin(MinimumCreaseAngle) &&
       std::abs(whole.Difference) > CreaseSignificance * whole.Error;
     const int tests = static_cast<int>(std::ceil(gap.Length / this->R));
     // One flat-looking window among many is what the noise gives: the significance of each of

@@ -40,9 +40,9 @@
  *    Curves shorter than JoinDistance between two junctions (a corner traced round as well as
  *    along its edges) collapse into one corner.
  *    After cleaning (stage 3), the ends it freed are joined again in the same way, and gaps along
- *    a crease are bridged from any distance: two free ends
- *    that point at each other (within 15 degrees, over 2 FitRadius s) are joined when all the
- *    cloud's points bend across the gap's line: over the whole gap, the two faces hinged on it
+ *    a crease are bridged from any distance: two free ends that point at each other (within 30
+ *    degrees, over 2 FitRadius s: on a shallow crease under noise the traced ends wander by more
+ *    than 15) are joined when all the cloud's points bend across the gap's line: over the whole gap, the two faces hinged on it
  *    differ in slope by a crease's angle (10 degrees) and by more than 3 standard errors (from
  *    the faces' residuals: the cloud's own noise), and no stretch of 2 FitRadius s along it looks
  *    flat (a bend nearer to none than to the gap's, and off the latter by more than 3 of its own
