@@ -59,6 +59,7 @@ const double AcrossNormals = std::cos(vtkMath::RadiansFromDegrees(30.0));
 const double CornerTurn = std::cos(vtkMath::RadiansFromDegrees(45.0)); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
 const double BridgeCone = std::cos(vtkMath::RadiansFromDegrees(30.0)); // an end joins what lies in this cone
+constexpr int BridgeProposals = 3; // the facing ends an end may be bridged to, nearest first
 constexpr int SmoothingPasses = 20;
 constexpr double SectionRadius = 1.5; // in FitRadius: the cross-section's points
 constexpr double SectionLength = 0.75; // in FitRadius: how far along the curve they may lie
@@ -1154,7 +1155,10 @@ void CurveRun::BridgeAlongCreases()
       directions.push_back(d.normalized());
     }
   }
-  // Pairs that point at each other, nearest first; each end bridged once.
+  // Pairs that point at each other, nearest first; each end bridged once. An end proposes its
+  // BridgeProposals nearest facing ends only: a gap to a farther one runs past the nearer ones,
+  // and testing every pair along a curve broken into many pieces took the cube of their number
+  // (each test reads the points along its gap).
   struct Gap
   {
     double Length;
@@ -1177,6 +1181,18 @@ void CurveRun::BridgeAlongCreases()
   std::sort(gaps.begin(), gaps.end(), [](const Gap& x, const Gap& y) {
     return x.Length < y.Length || (x.Length == y.Length && (x.A < y.A || (x.A == y.A && x.B < y.B)));
   });
+  std::vector<int> rank(ends.size(), 0);
+  size_t proposed = 0;
+  for (const Gap& gap : gaps)
+  {
+    if (rank[gap.A] < BridgeProposals || rank[gap.B] < BridgeProposals)
+    {
+      gaps[proposed++] = gap;
+    }
+    ++rank[gap.A];
+    ++rank[gap.B];
+  }
+  gaps.resize(proposed);
   std::vector<unsigned char> used(ends.size(), 0);
   std::vector<vtkIdType> ids;
   for (const Gap& gap : gaps)

@@ -2,7 +2,8 @@
 // the corners, close on circles, lie near the exact curves; the point output's CurveId agrees
 // with the lines; a branch of unvoted points is removed, a curve goes on through a T junction; a
 // gap along a shallow crease is bridged, the same marks on a flat sheet give no curve; bad input
-// gives an error, not a crash.
+// gives an error, not a crash, and a cloud that breaks into many pieces (randomly spaced points
+// on a line) finishes (the bridges once took the cube of the pieces: 49,000 points, hours).
 #include "FeaturePointsTestRun.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -266,6 +267,23 @@ vtkSmartPointer<vtkPolyData> TeeJunction(double branchScore)
 // A jittered grid (spacing 1, sigma 0.3 across) bent by `bendDegrees` along the x axis, whose
 // feature points are a band along the bend (|y| <= 1, 10 <= |x| <= 40): a stretch of 20 spacings
 // where the detector found no point.
+// n points at random places along a straight segment of length `length`.
+vtkSmartPointer<vtkPolyData> RandomLine(int n, double length)
+{
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> place(0.0, length);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int i = 0; i < n; ++i)
+  {
+    const double t = place(random) / std::sqrt(14.0);
+    points->InsertNextPoint(t, 2.0 * t, 3.0 * t);
+  }
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
+  return cloud;
+}
+
 vtkSmartPointer<vtkPolyData> CreaseWithGap(double bendDegrees)
 {
   std::mt19937 random(11);
@@ -440,6 +458,22 @@ int TestFeatureCurveExtraction(int, char*[])
     Expect(bounds[0] < -37.0 && bounds[1] > 37.0 && std::abs(bounds[2]) < 1.5 &&
         std::abs(bounds[3]) < 1.5,
       "gap: curves along the band, end to end (x -40 to 40)", bounds[1] - bounds[0]);
+  }
+  // A line of 49,000 randomly spaced points: the detector marks them all and the curves break
+  // into about a thousand pieces; every pair of facing ends was a bridge to test, each reading
+  // the points along its gap. Each end now proposes its 3 nearest facing ends: the curves take
+  // about 2 s here (CTest's limit, 300 s, stops the old cubic cost).
+  {
+    const double length = 4.0;
+    vtkNew<vtkCreaseVotingFeatures> detector;
+    detector->SetInputData(RandomLine(49000, length));
+    vtkNew<vtkFeatureCurveExtraction> curves;
+    curves->SetInputConnection(detector->GetOutputPort());
+    curves->Update();
+    vtkPolyData* lines = curves->GetCurves();
+    Expect(Finite(lines), "random line: finite curves", lines->GetNumberOfPoints());
+    Expect(curves->GetTotalLength() <= 1.01 * length, "random line: length within the line's",
+      curves->GetTotalLength());
   }
   // Bad input: no FeatureMask (an error, no crash, no curve); no points (no curve).
   {
