@@ -160,14 +160,17 @@ double vtkFeaturePointDetector::GlobalMeanSpacing(
     return local;
   }
   // vtkPointCloudNeighborhoods::FinishMeanSpacing over the own points of every process: the
-  // nearest distinct distances below 10 times their upper median, summed exactly (so in any
-  // order and split).
+  // nearest distinct distances below 10 times their upper median, a position's copies once (the
+  // copies of a position are all one process's own points: the pieces are boxes), summed
+  // exactly (so in any order and split).
   const std::vector<double>& nearest = neighborhoods->GetNearestDistances();
   const unsigned char* valid = neighborhoods->GetValidMask();
+  const std::vector<vtkIdType>& copies = neighborhoods->GetExtraCopies();
   std::vector<double> positive;
   for (vtkIdType i = 0; i < static_cast<vtkIdType>(nearest.size()); ++i)
   {
-    if (valid[i] && this->IsOwned(i) && nearest[i] > 0.0)
+    if (valid[i] && this->IsOwned(i) && nearest[i] > 0.0 &&
+      !std::binary_search(copies.begin(), copies.end(), i))
     {
       positive.push_back(nearest[i]);
     }

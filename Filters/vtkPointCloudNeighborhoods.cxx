@@ -191,6 +191,7 @@ bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)
   this->NumberOfValidPoints = 0;
   this->FirstInvalidPoint = -1;
   this->NumberOfDuplicatePoints = 0;
+  this->ExtraCopies.clear();
   this->MeanSpacing = -1.0;
   this->ErrorText.clear();
   std::fill(this->Center, this->Center + 3, 0.0);
@@ -428,20 +429,33 @@ double vtkPointCloudNeighborhoods::FinishMeanSpacing()
     }
   }
   this->NumberOfDuplicatePoints = static_cast<vtkIdType>(stacked.size());
+  // The copies of a position count once in the mean: a copy adds no spacing, and half the cloud
+  // stacked at one position (a scanner's invalid returns at its origin) made that one distance
+  // the median, and the mean spacing the distance from the stack to the rest.
+  // The stacked points by position.
+  std::vector<std::array<double, 3>> at(stacked.size());
+  for (size_t r = 0; r < stacked.size(); ++r)
+  {
+    this->Points->GetPoint(stacked[r], at[r].data());
+  }
+  std::vector<size_t> order(stacked.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::sort(order.begin(), order.end(),
+    [&at](size_t a, size_t b) { return at[a] < at[b] || (at[a] == at[b] && a < b); });
+  this->ExtraCopies.clear();
+  for (size_t o = 1; o < order.size(); ++o)
+  {
+    if (at[order[o]] == at[order[o - 1]])
+    {
+      this->ExtraCopies.push_back(stacked[order[o]]);
+    }
+  }
+  std::sort(this->ExtraCopies.begin(), this->ExtraCopies.end());
   if (this->GridLocator && !stacked.empty())
   {
     // One query per position for the nearest point at a nonzero distance (the copies of a stack
     // share it): linear however many copies a stack holds, and as many walks through the grid as
     // there are stacks (100,000 points at two positions walked the whole grid 100,000 times).
-    std::vector<std::array<double, 3>> at(stacked.size());
-    for (size_t r = 0; r < stacked.size(); ++r)
-    {
-      this->Points->GetPoint(stacked[r], at[r].data());
-    }
-    std::vector<size_t> order(stacked.size());
-    std::iota(order.begin(), order.end(), size_t(0));
-    std::sort(order.begin(), order.end(),
-      [&at](size_t a, size_t b) { return at[a] < at[b] || (at[a] == at[b] && a < b); });
     std::vector<vtkIdType> representatives;
     std::vector<size_t> group(stacked.size());
     for (size_t o = 0; o < order.size(); ++o)
@@ -499,7 +513,8 @@ double vtkPointCloudNeighborhoods::FinishMeanSpacing()
   positive.reserve(this->NumberOfPoints);
   for (vtkIdType i = 0; i < this->NumberOfPoints; ++i)
   {
-    if (this->Valid[i] && nearest[i] > 0.0)
+    if (this->Valid[i] && nearest[i] > 0.0 &&
+      !std::binary_search(this->ExtraCopies.begin(), this->ExtraCopies.end(), i))
     {
       positive.push_back(nearest[i]);
     }

@@ -191,6 +191,13 @@ public:
   vtkIdType GetNumberOfDuplicatePoints() const { return this->NumberOfDuplicatePoints; }
 
   /**
+   * The valid points at the position of another valid point that comes first (all copies of a
+   * position but one), sorted (after ComputeMeanSpacing()): the mean spacing counts a position
+   * once, whatever its copies.
+   */
+  const std::vector<vtkIdType>& GetExtraCopies() const { return this->ExtraCopies; }
+
+  /**
    * Centre of the bounding box of the valid points (Eq. 10 of the paper) and the box itself
    * (xmin, xmax, ymin, ymax, zmin, zmax).
    */
@@ -241,6 +248,7 @@ protected:
   vtkIdType NumberOfValidPoints = 0;
   vtkIdType FirstInvalidPoint = -1;
   vtkIdType NumberOfDuplicatePoints = 0;
+  std::vector<vtkIdType> ExtraCopies;
   double MeanSpacing = -1.0;
   double Center[3] = { 0, 0, 0 };
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };

@@ -6,6 +6,7 @@
 #include "vtkTestErrorObserver.h"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -114,6 +115,26 @@ int TestFeaturePointBadInput(int, char*[])
       p->InsertNextPoint(1.0, 2.0, 3.0);
     }
     expect("all points coincide", Run(p), "All points coincide", 0);
+  }
+  {
+    // More than half the cloud stacked at one position far from the rest (a scanner's invalid
+    // returns at its origin): the copies count once in the mean spacing, which stays the
+    // plane's. Counted each, the stack's distance to the plane was the median, and the mean
+    // spacing about half of it (the plane's features all lost).
+    Cloud c = NoisyPlane(3000, 64);
+    vtkSmartPointer<vtkPoints> alone = Copy(c.Data);
+    vtkSmartPointer<vtkPoints> p = Copy(c.Data);
+    for (int i = 0; i < 3100; ++i)
+    {
+      p->InsertNextPoint(0.5, 0.5, 50.0);
+    }
+    const Outcome plane = Run(alone);
+    const Outcome o = Run(p);
+    expect("half the cloud stacked", o, "coincide with another point", 6100);
+    FP_CHECK(std::abs(o.Filter->GetMeanSpacing() - plane.Filter->GetMeanSpacing()) <
+        0.01 * plane.Filter->GetMeanSpacing(),
+      "half the cloud stacked: mean spacing %g, the plane's %g", o.Filter->GetMeanSpacing(),
+      plane.Filter->GetMeanSpacing());
   }
   {
     // Two positions, 50,000 copies each: each copy's nearest distinct point used to be searched
