@@ -2163,19 +2163,26 @@ private:
     std::printf("method      %s, mean spacing %.6g%s\n", this->M->Name,
       filter->GetMeanSpacing() * LengthUnit,
       this->M->Details ? this->M->Details(filter).c_str() : "");
-    std::printf("threshold   %s > %.6g (%s)%s\n", filter->GetScoreArrayName(),
-      filter->GetThresholdUsed(),
-      filter->GetThresholdMode() == vtkFeaturePointDetector::AUTOMATIC
-        ? (FormatNumber(filter->GetThresholdSigmas()) + " robust standard deviations above the "
-                                                        "median")
-            .c_str()
-        : "absolute",
-      std::isnan(this->Grown) ? ""
-                              : (", then grown along the features through " +
-                                  std::string(filter->GetScoreArrayName()) + " > " +
-                                  FormatNumber(this->Grown) +
-                                  "; unexplained details and borders join")
-                                  .c_str());
+    if (filter->GetNumberOfCandidates() == 0)
+    {
+      std::printf("threshold   none: no point was scored\n");
+    }
+    else
+    {
+      std::printf("threshold   %s > %.6g (%s)%s\n", filter->GetScoreArrayName(),
+        filter->GetThresholdUsed(),
+        filter->GetThresholdMode() == vtkFeaturePointDetector::AUTOMATIC
+          ? (FormatNumber(filter->GetThresholdSigmas()) + " robust standard deviations above the "
+                                                          "median")
+              .c_str()
+          : "absolute",
+        std::isnan(this->Grown) ? ""
+                                : (", then grown along the features through " +
+                                    std::string(filter->GetScoreArrayName()) + " > " +
+                                    FormatNumber(this->Grown) +
+                                    "; unexplained details and borders join")
+                                    .c_str());
+    }
     std::printf("candidates  %lld of %lld points scored\n",
       static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n));
     std::printf("features    %lld (%.2f %%)\n", static_cast<long long>(features),

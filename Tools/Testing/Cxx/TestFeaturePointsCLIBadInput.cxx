@@ -537,6 +537,12 @@ void CoincidentPoints()
     Check(run.Err.find("All points coincide") != std::string::npos,
       std::string("20,000 copies, ") + method + ": no 'All points coincide' warning: " + run.Err);
   }
+  // Five points: nothing is scored, and the summary says so instead of a threshold of 0.
+  Spit(Path("five.xyz"), "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n");
+  const Run five = ExpectSuccess("five points", { Path("five.xyz"), Path("five.csv") });
+  Check(five.Out.find("threshold   none: no point was scored") != std::string::npos,
+    "five points: the summary's threshold line: " + five.Out);
+  ::unlink(Path("five.csv").c_str());
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::ostringstream mixed;
