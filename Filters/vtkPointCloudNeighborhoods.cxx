@@ -431,8 +431,8 @@ double vtkPointCloudNeighborhoods::FinishMeanSpacing()
   this->NumberOfDuplicatePoints = static_cast<vtkIdType>(stacked.size());
   // The copies of a position count once in the mean: a copy adds no spacing, and half the cloud
   // stacked at one position (a scanner's invalid returns at its origin) made that one distance
-  // the median, and the mean spacing the distance from the stack to the rest.
-  // The stacked points by position.
+  // the median, and the mean spacing the distance from the stack to the rest. The stacked points
+  // by position:
   std::vector<std::array<double, 3>> at(stacked.size());
   for (size_t r = 0; r < stacked.size(); ++r)
   {

@@ -3,7 +3,7 @@
 // with the lines; a branch of unvoted points is removed, a curve goes on through a T junction; a
 // gap along a shallow crease is bridged, the same marks on a flat sheet give no curve; bad input
 // gives an error, not a crash, and a cloud that breaks into many pieces (randomly spaced points
-// on a line) finishes (the bridges once took the cube of the pieces: 49,000 points, hours).
+// on a line) finishes (the bridges took the cube of the pieces: at 49,000 points, minutes).
 #include "FeaturePointsTestRun.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -264,9 +264,6 @@ vtkSmartPointer<vtkPolyData> TeeJunction(double branchScore)
   return cloud;
 }
 
-// A jittered grid (spacing 1, sigma 0.3 across) bent by `bendDegrees` along the x axis, whose
-// feature points are a band along the bend (|y| <= 1, 10 <= |x| <= 40): a stretch of 20 spacings
-// where the detector found no point.
 // n points at random places along a straight segment of length `length`.
 vtkSmartPointer<vtkPolyData> RandomLine(int n, double length)
 {
@@ -284,6 +281,9 @@ vtkSmartPointer<vtkPolyData> RandomLine(int n, double length)
   return cloud;
 }
 
+// A jittered grid (spacing 1, sigma 0.3 across) bent by `bendDegrees` along the x axis, whose
+// feature points are a band along the bend (|y| <= 1, 10 <= |x| <= 40): a stretch of 20 spacings
+// where the detector found no point.
 vtkSmartPointer<vtkPolyData> CreaseWithGap(double bendDegrees)
 {
   std::mt19937 random(11);
