@@ -1156,9 +1156,9 @@ void CurveRun::BridgeAlongCreases()
     }
   }
   // Pairs that point at each other, nearest first; each end bridged once. An end proposes its
-  // BridgeProposals nearest facing ends only: a gap to a farther one runs past the nearer ones,
-  // and testing every pair along a curve broken into many pieces took the cube of their number
-  // (each test reads the points along its gap).
+  // BridgeProposals nearest facing ends only (on the benchmarks' parts no farther bridge was
+  // taken): testing every pair along a curve broken into many pieces took the cube of their
+  // number (each test reads the points along its gap).
   struct Gap
   {
     double Length;
