@@ -8,10 +8,12 @@
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointCloudNeighborhoods.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <Eigen/Dense>
@@ -3638,6 +3640,12 @@ int vtkCreaseVotingFeatures::RequestData(
     return 0;
   }
   this->ResetFigures();
+  this->OnSites = false;
+  return this->Detect(input, output);
+}
+
+int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
+{
   this->NoiseSigma = 0.0;
   this->GrowThresholdUsed = this->GrowThreshold;
   const vtkIdType n = input->GetNumberOfPoints();
@@ -3672,9 +3680,27 @@ int vtkCreaseVotingFeatures::RequestData(
     }
     table.Store(first, count, block);
   };
-  if (!this->SearchAllPoints(points, n, kNear, neighborhoods, ids, store, 0.1))
+  // The warnings about the cloud wait for the choice between the cloud and its distinct positions.
+  const bool mayMerge = this->MergeCopies && !this->OnSites && !this->IsDistributed();
+  this->DeferCloudWarnings = mayMerge;
+  const bool searched = this->SearchAllPoints(points, n, kNear, neighborhoods, ids, store, 0.1);
+  this->DeferCloudWarnings = false;
+  if (!searched)
   {
     return finish();
+  }
+  if (mayMerge)
+  {
+    std::vector<vtkIdType> site;
+    double tolerance = 0.0;
+    const vtkIdType sites = this->FindSites(neighborhoods, ids, kNear,
+      [&table](vtkIdType r, int32_t* buffer, int w) { return table.Row(r, buffer, w); }, site,
+      tolerance);
+    if (sites > 0)
+    {
+      return this->DetectOnSites(input, output, site, sites, tolerance);
+    }
+    this->WarnAboutCloud(neighborhoods);
   }
   const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
   CreaseRun run(reader, ids, table, k, kNear, this->NumberOfNeighbors, this->MeanSpacing, n);
@@ -3964,6 +3990,98 @@ int vtkCreaseVotingFeatures::RequestData(
   return finish();
 }
 
+int vtkCreaseVotingFeatures::DetectOnSites(vtkPointSet* input, vtkPolyData* output,
+  const std::vector<vtkIdType>& site, vtkIdType sites, double tolerance)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkPoints* points = input->GetPoints();
+  // Each position at its first point's coordinates.
+  vtkNew<vtkPoints> positions;
+  positions->SetDataType(points->GetDataType());
+  positions->SetNumberOfPoints(sites);
+  vtkIdType valid = 0, placed = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (site[i] >= 0)
+    {
+      ++valid;
+      if (site[i] == placed)
+      {
+        positions->SetPoint(placed++, points->GetPoint(i));
+      }
+    }
+  }
+  vtkWarningMacro(<< valid - sites << " of " << valid << " points lie within " << tolerance
+                  << " (1 % of the median distance to a point's 8th nearest) of another point: "
+                     "the detector scores the "
+                  << sites << " distinct positions, and each point takes its position's results.");
+  vtkNew<vtkPolyData> distinct;
+  distinct->SetPoints(positions);
+  vtkNew<vtkPolyData> scored;
+  const bool featuresOnly = this->OutputFeaturesOnly;
+  this->OutputFeaturesOnly = false;
+  this->OnSites = true;
+  const int ok = this->Detect(distinct, scored);
+  this->OnSites = false;
+  this->OutputFeaturesOnly = featuresOnly;
+  if (!ok)
+  {
+    return 0;
+  }
+  // The positions' arrays, one tuple per input point (zero for an invalid point).
+  vtkPointData* from = scored->GetPointData();
+  std::vector<vtkSmartPointer<vtkDataArray>> arrays;
+  vtkSmartPointer<vtkUnsignedCharArray> mask;
+  for (const char* name : { "Normals", "CreaseVotes", "CreaseGain", "CreaseAngle", "FeatureType",
+         "CreaseOffset", "FeatureMask" })
+  {
+    vtkDataArray* source = from->GetArray(name);
+    if (!source)
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> a = vtk::TakeSmartPointer(source->NewInstance());
+    a->SetName(name);
+    a->SetNumberOfComponents(source->GetNumberOfComponents());
+    a->SetNumberOfTuples(n);
+    a->Fill(0.0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (site[i] >= 0)
+      {
+        a->SetTuple(i, site[i], source);
+      }
+    }
+    if (std::strcmp(name, "FeatureMask") == 0)
+    {
+      mask = vtkUnsignedCharArray::SafeDownCast(a);
+    }
+    else
+    {
+      arrays.push_back(a);
+    }
+  }
+  if (!mask)
+  {
+    return 0;
+  }
+  this->NumberOfCandidates = valid;
+  this->NumberOfFeaturePoints = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    this->NumberOfFeaturePoints += mask->GetValue(i) != 0;
+  }
+  std::vector<vtkDataArray*> raw;
+  for (const auto& a : arrays)
+  {
+    raw.push_back(a);
+  }
+  this->OriginalIds.clear(); // the arrays are in the input's order
+  const int assembled = this->AssembleOutput(input, output, raw, mask);
+  this->MergeRepeatedStages();
+  return assembled;
+}
+
 void vtkCreaseVotingFeatures::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -3975,6 +4093,7 @@ void vtkCreaseVotingFeatures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MultiScale: " << this->MultiScale << "\n";
   os << indent << "Borders: " << this->Borders << "\n";
   os << indent << "ThinFeatures: " << this->ThinFeatures << "\n";
+  os << indent << "MergeCopies: " << this->MergeCopies << "\n";
   os << indent << "NoiseSigma: " << this->NoiseSigma << "\n";
   os << indent << "GrowThresholdUsed: " << this->GrowThresholdUsed << "\n";
 }

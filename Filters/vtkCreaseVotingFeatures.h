@@ -245,6 +245,22 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Copies scored as one point. Default on. Where at least 1 % of the points lie within 1 % of
+   * the median distance to a point's 8th nearest of another point (exact copies; a scan merged
+   * with a copy of itself moved by a rounding), the detector runs on the distinct positions and
+   * each point takes its position's results: copies would otherwise fill the neighbourhoods (the
+   * k nearest of a twice-sampled cloud are k / 2 positions) and near copies would set the mean
+   * spacing to their distance. Fewer copies are scored as they are. Distributed runs score every
+   * point as it is (as with this off): the positions of a piece's halo would have to agree with
+   * their owners'.
+   */
+  vtkSetMacro(MergeCopies, bool);
+  vtkGetMacro(MergeCopies, bool);
+  vtkBooleanMacro(MergeCopies, bool);
+  ///@}
+
+  ///@{
   /** k of the PCA normals that seed the two-plane split. Default 15. */
   vtkSetClampMacro(NormalNeighbors, int, 3, 1000);
   vtkGetMacro(NormalNeighbors, int);
@@ -317,6 +333,20 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  /** The detector's steps on `input` (RequestData's work). */
+  int Detect(vtkPointSet* input, vtkPolyData* output);
+
+  /**
+   * Where points share positions (see FindSites(): `site` maps each input point to one of
+   * `sites` distinct positions), the detector's steps on the distinct positions, each point then
+   * taking its position's results: copies would otherwise fill the neighbourhoods (k nearest of
+   * twice-sampled points are k / 2 positions), and near copies would set the mean spacing to
+   * their distance. The output is the input's points, as always.
+   */
+  int DetectOnSites(vtkPointSet* input, vtkPolyData* output, const std::vector<vtkIdType>& site,
+    vtkIdType sites, double tolerance);
+  bool OnSites = false;
+
   int NumberOfNeighbors = 150;
   int NormalNeighbors = 15;
   double BandWidth = 2.0;
@@ -326,6 +356,7 @@ protected:
   bool Borders = true;
   bool ThinFeatures = false;
   bool CreaseOffsets = false;
+  bool MergeCopies = true;
   double NoiseSigma = 0.0;
   double GrowThresholdUsed = 0.0;
 

@@ -451,6 +451,10 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
     }
   };
   std::unordered_map<std::array<uint64_t, 4>, vtkIdType, PositionHash> selected;
+  // The first point of each position (its input id) and the copies of it.
+  std::vector<vtkIdType> first;
+  std::vector<V3> at;
+  std::vector<std::pair<vtkIdType, vtkIdType>> copyOf; // input ids: copy, first point
   for (vtkIdType i = 0; i < n; ++i)
   {
     V3 x;
@@ -466,12 +470,52 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
       const double v = x[c] == 0.0 ? 0.0 : x[c]; // -0 and 0 are one position
       std::memcpy(&key[c], &v, sizeof(double));
     }
-    const auto found = selected.emplace(key, static_cast<vtkIdType>(this->Points.size()));
+    const auto found = selected.emplace(key, i);
     if (!found.second)
     {
-      this->Copies.emplace_back(i, found.first->second);
+      copyOf.emplace_back(i, found.first->second);
       continue;
     }
+    first.push_back(i);
+    at.push_back(x);
+  }
+  decltype(selected)().swap(selected);
+  // Near copies (a scan merged with a copy of itself moved by a rounding): a point within a
+  // hundredth of a spacing of an earlier position of the same mask is a copy of that position.
+  std::vector<unsigned char> isCopy(first.size(), 0);
+  std::unordered_map<vtkIdType, vtkIdType> nearOf; // input ids: near copy, first point
+  {
+    PointSearch search;
+    search.Build(at);
+    std::vector<vtkIdType> near;
+    for (size_t p = 0; p < first.size(); ++p)
+    {
+      search.Within(at[p], 0.01 * this->S, near);
+      const bool feature = mask->GetTuple1(first[p]) != 0.0;
+      for (vtkIdType q : near) // ascending
+      {
+        if (static_cast<size_t>(q) < p && !isCopy[q] &&
+          (mask->GetTuple1(first[q]) != 0.0) == feature)
+        {
+          isCopy[p] = 1;
+          copyOf.emplace_back(first[p], first[q]);
+          nearOf.emplace(first[p], first[q]);
+          break;
+        }
+      }
+    }
+  }
+  std::unordered_map<vtkIdType, vtkIdType> indexOf; // input id of a kept point -> its index
+  for (size_t p = 0; p < first.size(); ++p)
+  {
+    if (isCopy[p])
+    {
+      continue;
+    }
+    const vtkIdType i = first[p];
+    const V3& x = at[p];
+    const bool feature = mask->GetTuple1(i) != 0.0;
+    indexOf.emplace(i, static_cast<vtkIdType>(this->Points.size()));
     unsigned char type = feature ? CONVEX : NONE;
     if (feature && types)
     {
@@ -510,6 +554,19 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
     this->Normals.push_back(normal);
     this->Type.push_back(type);
     this->Feature.push_back(feature ? 1 : 0);
+  }
+  for (const auto& copy : copyOf)
+  {
+    // An exact copy of a near copy: a copy of the position that one is a copy of.
+    auto kept = indexOf.find(copy.second);
+    if (kept == indexOf.end())
+    {
+      kept = indexOf.find(nearOf.at(copy.second));
+    }
+    if (kept != indexOf.end())
+    {
+      this->Copies.emplace_back(copy.first, kept->second);
+    }
   }
   this->AllSearch.Build(this->Points);
   this->TraceSearch.Build(this->TracePoints);

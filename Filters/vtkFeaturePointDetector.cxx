@@ -8,6 +8,7 @@
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
+#include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointCloudGridLocator.h"
@@ -27,6 +28,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <vector>
 
 vtkCxxSetObjectMacro(vtkFeaturePointDetector, Locator, vtkAbstractPointLocator);
@@ -709,6 +711,15 @@ bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods*
     return false;
   }
   this->MeanSpacing = d;
+  if (!this->DeferCloudWarnings)
+  {
+    this->WarnAboutCloud(neighborhoods);
+  }
+  return true;
+}
+
+void vtkFeaturePointDetector::WarnAboutCloud(vtkPointCloudNeighborhoods* neighborhoods)
+{
   if (this->IsDistributed())
   {
     // A piece's count includes its halo's points: process 0 says only whether any coincide.
@@ -731,7 +742,140 @@ bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods*
     this->WarnIfDegenerate(
       neighborhoods->GetPoints(), neighborhoods->GetValidMask(), neighborhoods->GetInputDataType());
   }
-  return true;
+}
+
+vtkIdType vtkFeaturePointDetector::FindSites(vtkPointCloudNeighborhoods* neighborhoods,
+  const std::vector<vtkIdType>& ids, int width,
+  const std::function<const int32_t*(vtkIdType, int32_t*, int)>& row, std::vector<vtkIdType>& site,
+  double& tolerance) const
+{
+  site.clear();
+  const vtkIdType rows = static_cast<vtkIdType>(ids.size());
+  if (this->IsDistributed() || rows < 2 || width < 1)
+  {
+    return 0;
+  }
+  vtkPoints* points = neighborhoods->GetPoints();
+  const std::vector<vtkIdType>& copies = neighborhoods->GetExtraCopies();
+  // The scale: the median distance to the 8th nearest, over one row per position (a stack of
+  // copies is one row, however many copies it holds).
+  const int eighth = std::min(width, 8) - 1;
+  std::vector<double> reach(static_cast<size_t>(rows), -1.0);
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<int32_t> buffer(static_cast<size_t>(width));
+    double x[3], y[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const int32_t* neighbors = row(r, buffer.data(), width);
+      if (neighbors[eighth] >= 0 && !std::binary_search(copies.begin(), copies.end(), ids[r]))
+      {
+        points->GetPoint(ids[r], x);
+        points->GetPoint(neighbors[eighth], y);
+        reach[r] = std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
+      }
+    }
+  });
+  reach.erase(std::remove(reach.begin(), reach.end(), -1.0), reach.end());
+  if (reach.empty())
+  {
+    return 0;
+  }
+  tolerance = 0.01 * featurepoints::UpperMedian(reach);
+  std::vector<double>().swap(reach);
+  // The rows whose nearest lies within the tolerance (few, but for copies).
+  const double tolerance2 = tolerance * tolerance;
+  std::vector<unsigned char> close(static_cast<size_t>(rows), 0);
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    int32_t nearest[1];
+    double x[3], y[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const int32_t* neighbors = row(r, nearest, 1);
+      if (neighbors[0] >= 0)
+      {
+        points->GetPoint(ids[r], x);
+        points->GetPoint(neighbors[0], y);
+        close[r] = vtkMath::Distance2BetweenPoints(x, y) <= tolerance2;
+      }
+    }
+  });
+  // Groups: union-find over the pairs of a row closer than the tolerance (or coincident), each
+  // group's root its smallest point id, so that the groups do not depend on the order of the
+  // pairs.
+  const vtkIdType n = neighborhoods->GetNumberOfPoints();
+  std::vector<vtkIdType> parent(static_cast<size_t>(n));
+  std::iota(parent.begin(), parent.end(), vtkIdType(0));
+  auto root = [&parent](vtkIdType i) {
+    while (parent[i] != i)
+    {
+      parent[i] = parent[parent[i]];
+      i = parent[i];
+    }
+    return i;
+  };
+  vtkIdType merged = 0;
+  std::vector<int32_t> buffer(static_cast<size_t>(width));
+  double x[3], y[3];
+  for (vtkIdType r = 0; r < rows; ++r)
+  {
+    if (!close[r])
+    {
+      continue;
+    }
+    const int32_t* neighbors = row(r, buffer.data(), width);
+    points->GetPoint(ids[r], x);
+    for (int j = 0; j < width && neighbors[j] >= 0; ++j)
+    {
+      points->GetPoint(neighbors[j], y);
+      if (!(vtkMath::Distance2BetweenPoints(x, y) <= tolerance2))
+      {
+        break; // nearest first
+      }
+      const vtkIdType a = root(ids[r]), b = root(neighbors[j]);
+      if (a != b)
+      {
+        parent[std::max(a, b)] = std::min(a, b);
+        ++merged;
+      }
+    }
+  }
+  if (merged == 0 || 100 * merged < rows)
+  {
+    return 0;
+  }
+  // Input ids: the method's numbering is the renumbered cloud's (OriginalIds) when renumbered.
+  const bool renumbered = static_cast<vtkIdType>(this->OriginalIds.size()) == n;
+  std::vector<vtkIdType> first(static_cast<size_t>(n), -1); // by root: the group's first input id
+  for (vtkIdType id : ids)
+  {
+    const vtkIdType input = renumbered ? this->OriginalIds[id] : id;
+    vtkIdType& f = first[root(id)];
+    f = f < 0 ? input : std::min(f, input);
+  }
+  // Groups numbered in the order of their first input points.
+  std::vector<vtkIdType> groupOf(static_cast<size_t>(n), -1); // by input id of a group's first
+  for (vtkIdType id : ids)
+  {
+    if (root(id) == id)
+    {
+      groupOf[first[id]] = 0;
+    }
+  }
+  vtkIdType groups = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (groupOf[i] == 0)
+    {
+      groupOf[i] = ++groups; // 1-based while marking
+    }
+  }
+  site.assign(static_cast<size_t>(n), -1);
+  for (vtkIdType id : ids)
+  {
+    const vtkIdType input = renumbered ? this->OriginalIds[id] : id;
+    site[input] = groupOf[first[root(id)]] - 1;
+  }
+  return groups;
 }
 
 bool vtkFeaturePointDetector::SearchAllPoints(vtkPoints* points, vtkIdType n, int k,
@@ -1031,6 +1175,27 @@ void vtkFeaturePointDetector::BeginStage(const char* name)
     this->StageTimes.push_back(0.0);
     this->StageStart = now;
   }
+}
+
+void vtkFeaturePointDetector::MergeRepeatedStages()
+{
+  std::vector<std::string> names;
+  std::vector<double> times;
+  for (size_t i = 0; i < this->StageNames.size(); ++i)
+  {
+    const auto at = std::find(names.begin(), names.end(), this->StageNames[i]);
+    if (at == names.end())
+    {
+      names.push_back(this->StageNames[i]);
+      times.push_back(this->StageTimes[i]);
+    }
+    else
+    {
+      times[at - names.begin()] += this->StageTimes[i];
+    }
+  }
+  this->StageNames.swap(names);
+  this->StageTimes.swap(times);
 }
 
 void vtkFeaturePointDetector::WarnIfDegenerate(

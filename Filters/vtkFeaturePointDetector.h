@@ -242,6 +242,36 @@ protected:
   bool CheckSpacing(double d, vtkPointCloudNeighborhoods* neighborhoods);
 
   /**
+   * The warnings CheckSpacing() gives about the cloud (points that coincide, a cloud on a line
+   * or a plane), which it leaves to the method while DeferCloudWarnings is set: a method that
+   * may run again on the cloud's distinct positions (FindSites()) warns once, about the cloud
+   * it scores.
+   */
+  void WarnAboutCloud(vtkPointCloudNeighborhoods* neighborhoods);
+
+  /** Sums the times of stages of one name into the first of them (a method that ran twice). */
+  void MergeRepeatedStages();
+  bool DeferCloudWarnings = false;
+
+  /**
+   * The positions that several points share: groups of valid points, each point within a
+   * tolerance of another of its group, the tolerance 1 % of the median distance from a point
+   * to its 8th nearest (exact copies; a scan merged with a copy of itself moved by a rounding or
+   * a registration). `row(r, buffer, w)` gives row r of the k-nearest table of `ids` (its first w
+   * entries, at most `width`, nearest first, -1 past its end), in the numbering the method works in.
+   * Where at least 1 % of the valid points are not the first of their group, fills `site`
+   * (input point id -> index of its group, the groups in the order of their first points; -1
+   * for an invalid point), sets `tolerance` and returns the number of groups. Otherwise returns
+   * 0 and leaves `site` empty: a few copies change a neighbourhood of many points little, and
+   * running again on the groups would double the time. One process only (returns 0 when
+   * distributed).
+   */
+  vtkIdType FindSites(vtkPointCloudNeighborhoods* neighborhoods,
+    const std::vector<vtkIdType>& ids, int width,
+    const std::function<const int32_t*(vtkIdType, int32_t*, int)>& row, std::vector<vtkIdType>& site,
+    double& tolerance) const;
+
+  /**
    * The usual path of a method that scores every valid point: prepare, find the k nearest of
    * every valid point (progress 0 to progressEnd) and the mean spacing from that table. Returns
    * false when nothing can be scored (after a warning) or on abort.

@@ -354,6 +354,14 @@ const std::vector<FilterOption>& FilterOptions()
       "every fit and vote uses --crease-k neighbours (without it, where the hinge does not "
       "explain a point's neighbourhood, that point's neighbourhood is halved, down to 20 points)",
       true },
+    { "keep-copies", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
+      [](vtkFeaturePointDetector* f, double) { Crease(f)->MergeCopiesOff(); },
+      [](vtkFeaturePointDetector* f) { return double(!Crease(f)->GetMergeCopies()); },
+      "score copies as separate points (without it, where at least 1 % of the points lie within "
+      "1 % of a point's distance to its 8th nearest of another point, the detector scores the "
+      "distinct positions and each copy takes its position's results; mpiexec runs always keep "
+      "them)",
+      true },
     { "crease-offsets", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
       [](vtkFeaturePointDetector* f, double) { Crease(f)->CreaseOffsetsOn(); },
       [](vtkFeaturePointDetector* f) { return double(Crease(f)->GetCreaseOffsets()); },

@@ -31,7 +31,7 @@ endif()
 # default) finds density contrast on the plate, none on the bracket.
 foreach(_case "huang2023-off;${_cloud};--method;huang2023;--voxel-filter;off"
     "huang2023;${_cloud};--method;huang2023" "huang2023-plate;${_plate};--method;huang2023"
-    "huang2023-text;${_text};--method;huang2023" "crease;${_cloud};--method;crease")
+    "huang2023-text;${_text};--method;huang2023" "crease;${_cloud};--method;crease;--keep-copies")
   list(GET _case 0 _name)
   list(GET _case 1 _input)
   list(SUBLIST _case 2 -1 _options)

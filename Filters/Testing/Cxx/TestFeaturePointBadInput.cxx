@@ -336,5 +336,76 @@ int TestFeaturePointBadInput(int, char*[])
         differences);
     }
   }
+  // Copies: the default detector scores the distinct positions, so a cloud with every point
+  // followed by a copy of it, exact or moved by a millionth of the spacing (a scan merged with a
+  // rounded copy of itself), gives both points exactly (bit for bit) the cloud's own arrays, and
+  // its mean spacing. Scored as they were, exact copies halved the neighbourhoods' reach and near
+  // ones set the mean spacing to their distance.
+  {
+    Cloud c = BentPlanes(20000, 68, 90.0, 0.5, 3.0);
+    auto clean = Copy(c.Data);
+    vtkNew<vtkCreaseVotingFeatures> a;
+    vtkNew<vtkPolyData> da;
+    da->SetPoints(clean);
+    a->SetInputData(da);
+    a->Update();
+    const double s = a->GetMeanSpacing();
+    for (double shift : { 0.0, 1e-6 })
+    {
+      vtkNew<vtkPoints> twins;
+      twins->SetDataTypeToDouble();
+      double x[3];
+      for (vtkIdType i = 0; i < clean->GetNumberOfPoints(); ++i)
+      {
+        clean->GetPoint(i, x);
+        twins->InsertNextPoint(x);
+        twins->InsertNextPoint(x[0] + shift * s, x[1] - shift * s, x[2] + shift * s);
+      }
+      vtkNew<vtkCreaseVotingFeatures> b;
+      vtkNew<vtkTest::ErrorObserver> observer;
+      b->AddObserver(vtkCommand::WarningEvent, observer);
+      vtkNew<vtkPolyData> db;
+      db->SetPoints(twins);
+      b->SetInputData(db);
+      b->Update();
+      vtkPointData* pa = a->GetOutput()->GetPointData();
+      vtkPointData* pb = b->GetOutput()->GetPointData();
+      long differences = 0, arrays = 0;
+      for (int k = 0; k < pa->GetNumberOfArrays(); ++k)
+      {
+        vtkDataArray* u = pa->GetArray(k);
+        vtkDataArray* v = u ? pb->GetArray(u->GetName()) : nullptr;
+        if (!u)
+        {
+          continue;
+        }
+        ++arrays;
+        if (!v || v->GetNumberOfComponents() != u->GetNumberOfComponents())
+        {
+          ++differences;
+          continue;
+        }
+        for (vtkIdType i = 0; i < twins->GetNumberOfPoints(); ++i)
+        {
+          for (int comp = 0; comp < u->GetNumberOfComponents(); ++comp)
+          {
+            differences += v->GetComponent(i, comp) != u->GetComponent(i / 2, comp) ? 1 : 0;
+          }
+        }
+      }
+      const long features = CountSet(Mask(b->GetOutput()));
+      std::printf("%-22s shift %g s: %ld arrays, %ld values differ from the cloud's, %ld "
+                  "feature points (the cloud: %ld), mean spacing %g (the cloud: %g)\n",
+        "every point twice", shift, arrays, differences, features, CountSet(Mask(a->GetOutput())),
+        b->GetMeanSpacing(), s);
+      FP_CHECK(arrays >= 5 && differences == 0 && features == 2 * CountSet(Mask(a->GetOutput())) &&
+          features > 100 && b->GetMeanSpacing() == s,
+        "every point twice (shift %g s): %ld values differ, mean spacing %g against %g", shift,
+        differences, b->GetMeanSpacing(), s);
+      FP_CHECK(observer->GetWarning() &&
+          observer->GetWarningMessage().find("distinct positions") != std::string::npos,
+        "every point twice (shift %g s): no warning about the copies", shift);
+    }
+  }
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -91,6 +91,7 @@ const std::vector<Property>& Properties()
     FP_CLAMPED(vtkCreaseVotingFeatures, GrowThreshold),
     FP_PLAIN(vtkCreaseVotingFeatures, ThinFeatures),
     FP_PLAIN(vtkCreaseVotingFeatures, CreaseOffsets),
+    FP_PLAIN(vtkCreaseVotingFeatures, MergeCopies),
     FP_PLAIN(vtkCreaseVotingFeatures, Borders),
     FP_PLAIN(vtkCreaseVotingFeatures, MultiScale),
     FP_CLAMPED(vtkFeaturePointExtraction, Alpha),
@@ -508,6 +509,10 @@ const std::map<std::string, Expected>& CLIOptions()
     { "single-scale",
       { { "crease" }, [](vtkFeaturePointDetector* f) {
           return std::string(Crease(f)->GetMultiScale() ? "off" : "on");
+        } } },
+    { "keep-copies",
+      { { "crease" }, [](vtkFeaturePointDetector* f) {
+          return std::string(Crease(f)->GetMergeCopies() ? "off" : "on");
         } } },
     { "crease-offsets",
       { { "crease" }, [](vtkFeaturePointDetector* f) {

@@ -361,11 +361,18 @@ int main(int argc, char* argv[])
     { "huang2023 (defaults), plate 90000", large, [&] { return huang(true); }, true, true },
     { "crease (defaults), bracket", bracket,
       [&] { return make(vtkCreaseVotingFeatures::New()); }, true, false },
-    { "crease (defaults), duplicates", duplicates,
-      [&] { return make(vtkCreaseVotingFeatures::New()); }, true, false },
-    { "crease (40 neighbours, thin, offsets), duplicates", duplicates,
+    // Distributed runs score copies as they are: the one-process run too (MergeCopies off).
+    { "crease (copies kept), duplicates", duplicates,
       [&] {
         auto f = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
+        f->MergeCopiesOff();
+        return vtkSmartPointer<vtkFeaturePointDetector>(f);
+      },
+      true, false },
+    { "crease (40 neighbours, thin, offsets, copies kept), duplicates", duplicates,
+      [&] {
+        auto f = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
+        f->MergeCopiesOff();
         f->SetNumberOfNeighbors(40);
         f->ThinFeaturesOn();
         f->CreaseOffsetsOn();
