@@ -1303,7 +1303,12 @@ void vtkFeaturePointDetector::WarnIfDegenerate(
   // their last place at the cloud's largest coordinate), not merely small beside the extent.
   const double unit = dataType == VTK_FLOAT ? std::numeric_limits<float>::epsilon()
                                             : std::numeric_limits<double>::epsilon();
-  const double resolved = 16.0 * unit * magnitude;
+  // And below the mean spacing: a cloud that the coordinates resolve no better than a few
+  // units in their last place (a unit cube stored as float32 at 1e6, where the unit is 1/16;
+  // outliers at FLT_MAX, which set the magnitude) is still a surface where its points spread
+  // further across the line or the plane than from one point to the next; rounded points on a
+  // line or a plane lie within half a unit of it, and a unit apart at least.
+  const double resolved = std::min(16.0 * unit * magnitude, this->MeanSpacing);
   if (fromLine <= resolved)
   {
     vtkWarningMacro("All points lie on a straight line: surface normals are undefined there, so "

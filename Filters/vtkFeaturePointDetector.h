@@ -417,7 +417,8 @@ protected:
   void BeginStage(const char* name);
 
   // Warns when all valid points lie on a line or on a plane, within what coordinates of
-  // `dataType` (that of the input points) resolve.
+  // `dataType` (that of the input points) resolve and closer than the mean spacing (which must
+  // be set).
   void WarnIfDegenerate(vtkPoints* points, const unsigned char* valid, int dataType);
 
   int ThresholdMode = AUTOMATIC;

@@ -1231,8 +1231,9 @@ void WarnReplacedArrays(vtkPointSet* input, vtkPolyData* result)
 // The power of two by which to scale the cloud so that squares and products of its coordinate
 // differences neither overflow nor underflow (0: leave it as it is). Clouds whose extent lies
 // within 2^-64 .. 2^64 are left alone (their results do not change); others are scaled to a
-// robust extent near 1 (the central 99 % of the points on each axis, so that one far point does
-// not shrink the rest into underflow). A power of two scales every coordinate exactly.
+// robust extent near 1 (the central half of the points on each axis, so that far points, even
+// 1 % of them, do not shrink the rest into underflow). A power of two scales every coordinate
+// exactly.
 int ScaledFrameExponent(vtkPointSet* cloud)
 {
   const vtkIdType n = cloud->GetNumberOfPoints();
@@ -1254,7 +1255,7 @@ int ScaledFrameExponent(vtkPointSet* cloud)
     {
       sample.push_back(cloud->GetPoint(i)[a]);
     }
-    const size_t lo = sample.size() / 200, hi = sample.size() - 1 - sample.size() / 200;
+    const size_t lo = sample.size() / 4, hi = sample.size() - 1 - sample.size() / 4;
     std::nth_element(sample.begin(), sample.begin() + lo, sample.end());
     const double qlo = sample[lo];
     std::nth_element(sample.begin(), sample.begin() + hi, sample.end());

@@ -157,6 +157,31 @@ int TestFeaturePointBadInput(int, char*[])
     expect("collinear points", Run(p), "straight line", 2000);
   }
   {
+    // A unit cube's surface on a 1/16 lattice, stored as float32 at 1e6, where 1/16 is the unit
+    // in the last place: the coordinates resolve the cube exactly, though no better than 16 of
+    // those units, and it was called a straight line.
+    vtkNew<vtkPoints> p;
+    p->SetDataTypeToFloat();
+    for (int i = 0; i <= 16; ++i)
+    {
+      for (int j = 0; j <= 16; ++j)
+      {
+        for (int k = 0; k <= 16; ++k)
+        {
+          if (i % 16 == 0 || j % 16 == 0 || k % 16 == 0)
+          {
+            p->InsertNextPoint(1e6 + i / 16.0, 1e6 + j / 16.0, 1e6 + k / 16.0);
+          }
+        }
+      }
+    }
+    const Outcome o = Run(p);
+    expect("float32 cube at 1e6", o, nullptr, p->GetNumberOfPoints());
+    FP_CHECK(o.Message.find("straight line") == std::string::npos &&
+        o.Message.find("one plane") == std::string::npos,
+      "float32 cube at 1e6: %s", o.Message.c_str());
+  }
+  {
     // A regular grid on a plane: every score equal, nothing is a feature.
     vtkNew<vtkPoints> p;
     for (int i = 0; i < 100; ++i)

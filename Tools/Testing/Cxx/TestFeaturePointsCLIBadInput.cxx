@@ -526,6 +526,56 @@ void FuzzedFiles()
     "an output through a dangling link: the link was replaced or its target not written");
 }
 
+// The number after "features" in a run's summary (-1: none).
+long SummaryFeatures(const std::string& out)
+{
+  const size_t at = out.find("\nfeatures ");
+  return at == std::string::npos ? -1 : std::atol(out.c_str() + at + 10);
+}
+
+void FarOutliers()
+{
+  // A unit cube's surface, then the same with 1 % of its points replaced by points up to 1e200
+  // away: the far points set the cloud's scale, which shrank the cube into underflow (at 1e200:
+  // 40 feature points instead of 446, and an error after 24 s at 1e160). The cube's own points
+  // must be found as without them; the far points are isolated.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::ostringstream cube, far;
+  cube.precision(17);
+  far.precision(17);
+  for (int i = 0; i < 8000; ++i)
+  {
+    double x[3] = { u(rng), u(rng), u(rng) };
+    const int face = i % 6;
+    x[face / 2] = face % 2;
+    cube << x[0] << " " << x[1] << " " << x[2] << "\n";
+    if (i % 100 == 0)
+    {
+      far << (u(rng) - 0.5) * 1e200 << " " << (u(rng) - 0.5) * 1e200 << " " << u(rng) * 1e200
+          << "\n";
+    }
+    else
+    {
+      far << x[0] << " " << x[1] << " " << x[2] << "\n";
+    }
+  }
+  Spit(Path("cube.xyz"), cube.str());
+  Spit(Path("far.xyz"), far.str());
+  const Run alone = ExpectSuccess("a cube", { Path("cube.xyz"), Path("cube.csv") });
+  const Run mixed = ExpectSuccess("a cube with 1 % of its points near 1e200",
+    { Path("far.xyz"), Path("far.csv") }, 20.0);
+  const long a = SummaryFeatures(alone.Out), m = SummaryFeatures(mixed.Out);
+  std::printf("a cube: %ld feature points; with 1 %% of its points near 1e200: %ld\n", a, m);
+  Check(a > 300 && m >= 0.97 * 0.99 * a && m <= 1.03 * a,
+    "a cube with far points: " + std::to_string(m) + " feature points, alone " + std::to_string(a));
+  Check(mixed.Err.find("straight line") == std::string::npos &&
+      mixed.Err.find("one plane") == std::string::npos,
+    "a cube with far points: a false warning: " + mixed.Err);
+  ::unlink(Path("cube.csv").c_str());
+  ::unlink(Path("far.csv").c_str());
+}
+
 void CoincidentPoints()
 {
   // Before: 20,000 copies did not finish in 60 s; 12,000 copies among 14,000 points took 38-57 s.
@@ -1069,6 +1119,7 @@ int main(int argc, char* argv[])
   HugeCounts();
   FuzzedFiles();
   CoincidentPoints();
+  FarOutliers();
   WideFiles();
   LegacyFiles();
   ExtremeScales();
