@@ -1,4 +1,5 @@
 #include "vtkFeatureCurveExtraction.h"
+#include "vtkFeaturePointsStatistics.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -128,6 +129,21 @@ public:
   vtkIdType Nearest(const V3& x) const
   {
     return this->Count ? this->Locator->FindClosestPoint(x.data()) : -1;
+  }
+  // The distance from point i of the built points to its k-th nearest other one (-1: fewer).
+  double KthDistance(const std::vector<V3>& points, vtkIdType i, int k) const
+  {
+    if (this->Count <= k)
+    {
+      return -1.0;
+    }
+    this->Locator->FindClosestNPoints(k + 1, points[i].data(), this->Ids);
+    double d = 0.0;
+    for (vtkIdType j = 0; j < this->Ids->GetNumberOfIds(); ++j)
+    {
+      d = std::max(d, (points[this->Ids->GetId(j)] - points[i]).norm());
+    }
+    return d;
   }
 
 private:
@@ -316,6 +332,8 @@ public:
     vtkDataArray* normals, vtkDataArray* scores, double threshold, vtkDataArray* offsets);
   // Only the ridges of the score where the trace points are no line (a strip over close creases).
   void KeepRidges();
+  // A fit radius that holds enough trace points where they are sparse (a one-point-wide mask).
+  void AdaptFitRadius();
   // Line-likeness of each trace point's neighbourhood, and the seeding order.
   void OrderSeeds();
   // Stage 1: traces from every uncovered seed.
@@ -633,6 +651,31 @@ void CurveRun::KeepRidges()
   this->TraceIndex.swap(index);
   this->Supported.swap(supported);
   this->TraceSearch.Build(this->TracePoints);
+}
+
+void CurveRun::AdaptFitRadius()
+{
+  // A fit needs MinFitPoints trace points and 2 ahead of the step; along a one-point-wide mask
+  // on a random sampling there are about 0.5 per spacing, so that a ball of FitRadius s (4 s)
+  // holds 4 on average and the traces stopped at every sparser stretch (a clean 10K cube with
+  // --thin: traces along 4.6 of its 12 edge lengths). The radius grows to 1.5 times the median
+  // distance from a trace point to its 4th nearest (2 per side along a row: 6 in the ball on
+  // average); a band's trace points are denser, and keep FitRadius.
+  const vtkIdType n = static_cast<vtkIdType>(this->TracePoints.size());
+  std::vector<double> reach;
+  const vtkIdType stride = std::max<vtkIdType>(1, n / 20000);
+  for (vtkIdType i = 0; i < n; i += stride)
+  {
+    const double d = this->TraceSearch.KthDistance(this->TracePoints, i, MinFitPoints);
+    if (d > 0.0)
+    {
+      reach.push_back(d);
+    }
+  }
+  if (!reach.empty())
+  {
+    this->R = std::max(this->R, 1.5 * featurepoints::UpperMedian(reach));
+  }
 }
 
 void CurveRun::OrderSeeds()
@@ -2727,6 +2770,7 @@ int vtkFeatureCurveExtraction::RequestData(
     scores && scores != mask && std::isfinite(threshold) && threshold > 0.0 ? scores : nullptr,
     threshold, offsets);
   this->UpdateProgress(0.1);
+  run.AdaptFitRadius();
   run.OrderSeeds();
   this->UpdateProgress(0.3);
   run.TraceAll();

@@ -116,7 +116,12 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** Radius of the local line fits and cross-sections, in mean spacings. Default 4. */
+  /**
+   * Radius of the local line fits and cross-sections, in mean spacings. Default 4. Where the
+   * trace points are sparser (a one-point-wide mask: about one point in two spacings along a
+   * crease), the radius in use grows to 1.5 times the median distance from a trace point to its
+   * 4th nearest, so that a fit's ball holds about 6 of them.
+   */
   vtkSetClampMacro(FitRadius, double, 1.0, 100.0);
   vtkGetMacro(FitRadius, double);
   ///@}

@@ -103,11 +103,18 @@ struct Run
   vtkNew<vtkCreaseVotingFeatures> Detector;
   vtkNew<vtkFeatureCurveExtraction> Curves;
   double S = 0.0;
-  Run(int model, vtkIdType n)
+  Run(int model, vtkIdType n, bool thin = false, bool clean = false)
   {
     this->Source->SetModel(model);
     this->Source->SetNumberOfPoints(n);
+    if (clean)
+    {
+      // Uniformly sampled, without noise.
+      this->Source->SetFeatureDensityFactor(1.0);
+      this->Source->SetNoiseFactor(0.0);
+    }
     this->Source->Update();
+    this->Detector->SetThinFeatures(thin);
     this->S = this->Source->GetOutput()->GetFieldData()->GetArray("CleanMeanSpacing")->GetTuple1(0);
     this->Detector->SetInputConnection(this->Source->GetOutputPort());
     this->Curves->SetInputConnection(this->Detector->GetOutputPort());
@@ -342,6 +349,19 @@ int TestFeatureCurveExtraction(int, char*[])
     Expect(angle > 75.0 && angle < 105.0, "box: mean crease angle (90)", angle);
     Expect(std::abs(box.Curves->GetTotalLength() - 4 * (100 + 70 + 50)) < 0.05 * 880,
       "box: total length (880)", box.Curves->GetTotalLength());
+  }
+  // The box from a one-point-wide mask: about one feature point in two spacings along an edge,
+  // too few for a fit within FitRadius; the radius in use follows the trace points' spacing.
+  // Clean and uniformly sampled (the sparsest mask): measured recall 0.90, 0.71 with FitRadius.
+  {
+    Run box(vtkFeatureModelSource::BOX, 10000, true, true);
+    vtkPolyData* lines = box.Curves->GetCurves();
+    double precision, recall, distance;
+    Compare(lines, box.Source->GetFeatureCurves(), box.S, precision, recall, distance);
+    std::printf("thin box: %lld curves, precision %.3f, recall %.3f\n",
+      static_cast<long long>(lines->GetNumberOfCells()), precision, recall);
+    Expect(precision >= 0.9, "thin box: precision within 2 s", precision);
+    Expect(recall >= 0.85, "thin box: recall within 2 s", recall);
   }
   // The cylinder: its two rims, closed.
   {
