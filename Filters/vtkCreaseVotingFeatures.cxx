@@ -3698,6 +3698,9 @@ int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
       tolerance);
     if (sites > 0)
     {
+      // The cloud's table is not read again: freed for the positions' run.
+      table = NeighborTable();
+      std::vector<vtkIdType>().swap(ids);
       return this->DetectOnSites(input, output, site, sites, tolerance);
     }
     this->WarnAboutCloud(neighborhoods);

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -36,6 +37,41 @@ Outcome Run(vtkPoints* points)
   o.Message = observer->GetWarning() ? observer->GetWarningMessage()
                                      : (observer->GetError() ? observer->GetErrorMessage() : "");
   return o;
+}
+
+// The values of `got`'s arrays that differ from those of `expected` at point source(i) (0 where
+// source(i) < 0), over got's n points; `arrays` receives the number of expected's arrays (a
+// missing or misshapen array counts as one difference).
+long DifferingValues(vtkPointData* expected, vtkPointData* got, vtkIdType n,
+  const std::function<vtkIdType(vtkIdType)>& source, long& arrays)
+{
+  long differences = 0;
+  arrays = 0;
+  for (int k = 0; k < expected->GetNumberOfArrays(); ++k)
+  {
+    vtkDataArray* x = expected->GetArray(k);
+    vtkDataArray* y = x ? got->GetArray(x->GetName()) : nullptr;
+    if (!x)
+    {
+      continue;
+    }
+    ++arrays;
+    if (!y || y->GetNumberOfComponents() != x->GetNumberOfComponents())
+    {
+      ++differences;
+      continue;
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const vtkIdType from = source(i);
+      for (int comp = 0; comp < x->GetNumberOfComponents(); ++comp)
+      {
+        const double want = from < 0 ? 0.0 : x->GetComponent(from, comp);
+        differences += y->GetComponent(i, comp) != want ? 1 : 0;
+      }
+    }
+  }
+  return differences;
 }
 
 vtkSmartPointer<vtkPoints> Copy(vtkPolyData* data)
@@ -323,33 +359,10 @@ int TestFeaturePointBadInput(int, char*[])
       b->SetInputData(db);
       a->Update();
       b->Update();
-      vtkPointData* pa = a->GetOutput()->GetPointData();
-      vtkPointData* pb = b->GetOutput()->GetPointData();
-      long differences = 0, arrays = 0;
-      for (int k = 0; k < pa->GetNumberOfArrays(); ++k)
-      {
-        vtkDataArray* x = pa->GetArray(k);
-        vtkDataArray* y = x ? pb->GetArray(x->GetName()) : nullptr;
-        if (!x)
-        {
-          continue;
-        }
-        ++arrays;
-        if (!y || y->GetNumberOfComponents() != x->GetNumberOfComponents())
-        {
-          ++differences;
-          continue;
-        }
-        const int nc = x->GetNumberOfComponents();
-        for (vtkIdType i = 0; i < static_cast<vtkIdType>(cleanOf.size()); ++i)
-        {
-          for (int comp = 0; comp < nc; ++comp)
-          {
-            const double want = cleanOf[i] < 0 ? 0.0 : x->GetComponent(cleanOf[i], comp);
-            differences += y->GetComponent(i, comp) != want ? 1 : 0;
-          }
-        }
-      }
+      long arrays = 0;
+      const long differences = DifferingValues(a->GetOutput()->GetPointData(),
+        b->GetOutput()->GetPointData(), static_cast<vtkIdType>(cleanOf.size()),
+        [&cleanOf](vtkIdType i) { return cleanOf[i]; }, arrays);
       const long features = CountSet(Mask(b->GetOutput()));
       std::printf("%-22s %s: %ld arrays, %ld values differ from the clean cloud's, %ld feature "
                   "points\n",
@@ -393,31 +406,10 @@ int TestFeaturePointBadInput(int, char*[])
       db->SetPoints(twins);
       b->SetInputData(db);
       b->Update();
-      vtkPointData* pa = a->GetOutput()->GetPointData();
-      vtkPointData* pb = b->GetOutput()->GetPointData();
-      long differences = 0, arrays = 0;
-      for (int k = 0; k < pa->GetNumberOfArrays(); ++k)
-      {
-        vtkDataArray* u = pa->GetArray(k);
-        vtkDataArray* v = u ? pb->GetArray(u->GetName()) : nullptr;
-        if (!u)
-        {
-          continue;
-        }
-        ++arrays;
-        if (!v || v->GetNumberOfComponents() != u->GetNumberOfComponents())
-        {
-          ++differences;
-          continue;
-        }
-        for (vtkIdType i = 0; i < twins->GetNumberOfPoints(); ++i)
-        {
-          for (int comp = 0; comp < u->GetNumberOfComponents(); ++comp)
-          {
-            differences += v->GetComponent(i, comp) != u->GetComponent(i / 2, comp) ? 1 : 0;
-          }
-        }
-      }
+      long arrays = 0;
+      const long differences = DifferingValues(a->GetOutput()->GetPointData(),
+        b->GetOutput()->GetPointData(), twins->GetNumberOfPoints(),
+        [](vtkIdType i) { return i / 2; }, arrays);
       const long features = CountSet(Mask(b->GetOutput()));
       std::printf("%-22s shift %g s: %ld arrays, %ld values differ from the cloud's, %ld "
                   "feature points (the cloud: %ld), mean spacing %g (the cloud: %g)\n",
