@@ -2788,6 +2788,9 @@ int vtkFeatureCurveExtraction::RequestData(
   run.BridgeAlongCreases();
   run.RemoveFlatPieces();
   run.SplitAtCorners();
+  // A corner that a trace went round can be split twice (two turns of 45 degrees or more, more
+  // than a CornerWindow apart): the piece between is a short link too.
+  run.CollapseShortLinks();
   run.SplitAtTypeChanges();
   std::vector<std::array<int, 2>> through;
   const std::vector<Chain> chains = run.MergeThrough(run.ExtractChains(), through);
