@@ -1527,11 +1527,12 @@ struct CreaseRun
     const unsigned char* band, unsigned char* mask) const;
 
 private:
-  // Whether one plane explains all `count` neighbours of row r (row) within the noise: where the
-  // links split such a neighbourhood, the split is a seam of a random sampling (the 5 nearest of
-  // the points on either side of a line all on their own side), not the sides of a wall, which
-  // lie a wall's thickness apart along the normal.
-  bool Seam(vtkIdType r, const int32_t* row, int count, Scratch& s) const;
+  // Whether one plane explains row r's point and all `count` of its neighbours (row) within the
+  // noise (see OnePlane): then they are one sheet. Where the links split such a neighbourhood,
+  // the split is a seam of a random sampling (the 5 nearest of the points on either side of a
+  // line all on their own side), not the sides of a wall, which lie a wall's thickness apart
+  // along the normal.
+  bool OnePlaneRow(vtkIdType r, const int32_t* row, int count) const;
   // The members of row r's sheet (row: its neighbours), nearest first, at most `count` of them besides the point,
   // as coordinates relative to the point (P[0] = 0) with their normals.
   void GatherSheet(vtkIdType r, const int32_t* row, int count, const float* normal, Scratch& s) const;
@@ -2170,6 +2171,14 @@ CreaseFit FitGathered(Scratch& s, double variance, bool cubic)
   return fit;
 }
 
+// Whether one plane explains the points of `all` (at least 8) within the noise: a residual of at
+// most the bound of the quadric (so that Explains() holds); rss: the plane's residual.
+bool PlaneExplains(const Moments& all, double variance, double& rss)
+{
+  Eigen::Vector3d c, n;
+  return all.Count >= 8 && FitPlane(all, c, n, rss) && rss <= MisfitBound(all.Count - 6) * variance;
+}
+
 // Whether one plane explains the gathered points p within the noise (the bound of the quadric,
 // so that Explains() holds), as on most of a part's faces; then `fit` is that plane alone: no
 // line, no gain. Most points lie on faces, and the two-plane fit was most of the detector's
@@ -2178,36 +2187,35 @@ CreaseFit FitGathered(Scratch& s, double variance, bool cubic)
 // those whose sheet holds a point that one plane does not explain.
 bool OnePlane(const std::vector<Eigen::Vector3d>& p, double variance, CreaseFit& fit)
 {
-  const int m = static_cast<int>(p.size());
   Moments all;
   for (const Eigen::Vector3d& q : p)
   {
     all.Add(q);
   }
-  Eigen::Vector3d c, n;
   double rss = 0.0;
-  if (m < 8 || !FitPlane(all, c, n, rss) || rss > MisfitBound(m - 6) * variance)
+  if (!PlaneExplains(all, variance, rss))
   {
     return false;
   }
   fit = CreaseFit();
-  fit.Points = m;
+  fit.Points = all.Count;
   fit.RSS1 = fit.RSSQ = fit.Hinge.RSS2 = fit.Cross.RSS2 = rss;
   return true;
 }
 
-bool CreaseRun::Seam(vtkIdType r, const int32_t* row, int count, Scratch& s) const
+bool CreaseRun::OnePlaneRow(vtkIdType r, const int32_t* row, int count) const
 {
   double x[3], y[3];
   this->Reader.Get(this->Ids[r], x);
-  s.P.assign(1, Eigen::Vector3d::Zero());
+  Moments all;
+  all.Add(Eigen::Vector3d::Zero());
   for (int j = 0; j < count; ++j)
   {
     this->Reader.Get(row[j], y);
-    s.P.emplace_back(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+    all.Add(Eigen::Vector3d(y[0] - x[0], y[1] - x[1], y[2] - x[2]));
   }
-  CreaseFit plane;
-  return OnePlane(s.P, this->Variance, plane);
+  double rss = 0.0;
+  return PlaneExplains(all, this->Variance, rss);
 }
 
 bool CreaseRun::LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int32_t* links)
@@ -2619,11 +2627,18 @@ void CreaseRun::FitCreases(const float* normal, vtkIdType begin, vtkIdType end)
       const int32_t* row = this->Row(r, s.Row.data());
       const int count = featurepoints::RowLength(row, this->KFit);
       uint64_t* sheet = this->Sheets.data() + r * this->Words;
-      // Every neighbour when the sheet holds fewer than 8 points (an isolated point), so that
-      // the fit has something to work on, or when the links split a neighbourhood that one plane
-      // explains (a seam of the sampling, not two sheets).
-      const int reached = s.Sheet.Reach(this->Ids[r], row, count, this->Links, sheet);
-      if (reached < 8 || (reached <= count && this->Seam(r, row, count, s)))
+      // Where one plane explains the whole neighbourhood (most of a part's faces), it is one
+      // sheet and the point is flat: every neighbour, without following the links (a split
+      // there would be a seam of the sampling, not two sheets).
+      if (this->OnePlaneRow(r, row, count))
+      {
+        std::fill(sheet, sheet + this->Words, ~uint64_t(0));
+        this->Flat[this->Ids[r]] = 1;
+        continue;
+      }
+      // Every neighbour also when the sheet holds fewer than 8 points (an isolated point), so
+      // that the fit has something to work on.
+      if (s.Sheet.Reach(this->Ids[r], row, count, this->Links, sheet) < 8)
       {
         std::fill(sheet, sheet + this->Words, ~uint64_t(0));
       }

@@ -574,7 +574,28 @@ struct GridQuery
             }
             return;
           }
-          for (int32_t s = g.CellStart[cell]; s < g.CellStart[cell + 1]; ++s)
+          const int32_t first = g.CellStart[cell], last = g.CellStart[cell + 1];
+          if (!useHeap)
+          {
+            // Large k: every point is written, and kept (the count moves on) when it is within
+            // the bound; no branch to mispredict on the about half of them that are not.
+            const size_t base = candidates.size();
+            candidates.resize(base + static_cast<size_t>(last - first));
+            Candidate* out = candidates.data() + base;
+            size_t kept = 0;
+            const double* y = g.SortedPoints + 3 * static_cast<size_t>(first);
+            for (int32_t s = first; s < last; ++s, y += 3)
+            {
+              const int32_t other = g.SortedIds[s];
+              const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+              const double d2 = dx * dx + dy * dy + dz * dz;
+              out[kept] = Candidate{ d2, other };
+              kept += static_cast<size_t>((d2 <= bound) & (other != id));
+            }
+            candidates.resize(base + kept);
+            return;
+          }
+          for (int32_t s = first; s < last; ++s)
           {
             const int32_t other = g.SortedIds[s];
             if (other == id)
