@@ -59,6 +59,7 @@ constexpr double RidgeRadius = 2.0; // s: a crease point's score against those t
 const double AcrossNormals = std::cos(vtkMath::RadiansFromDegrees(30.0));
 const double CornerTurn = std::cos(vtkMath::RadiansFromDegrees(45.0)); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
+constexpr double CornerNear = 2.0;      // s: a vertex this near a point typed corner is at one
 const double BridgeCone = std::cos(vtkMath::RadiansFromDegrees(30.0)); // an end joins what lies in this cone
 constexpr int BridgeProposals = 3; // the facing ends an end may be bridged to, nearest first
 constexpr int SmoothingPasses = 20;
@@ -405,6 +406,9 @@ private:
   // Whether the gap from a along t (length long) is a border's: both ends on one, and the
   // detector's border points along all of it.
   bool BorderAlong(const V3& a, const V3& t, double length) const;
+  // Whether a trace point that the detector typed CORNER lies within CornerNear s of x (ids:
+  // scratch).
+  bool NearCorner(const V3& x, std::vector<vtkIdType>& ids) const;
   // Whether most of the trace points `ids` are border points.
   bool MostlyBorder(const std::vector<vtkIdType>& ids) const;
   // The crease direction c that the normals of the points around x show; false where they show
@@ -1787,9 +1791,18 @@ void CurveRun::CollapseShortLinks()
   }
 }
 
+bool CurveRun::NearCorner(const V3& x, std::vector<vtkIdType>& ids) const
+{
+  this->TraceSearch.Within(x, CornerNear * this->S, ids);
+  return std::any_of(
+    ids.begin(), ids.end(), [&](vtkIdType i) { return this->Type[this->TraceIndex[i]] == CORNER; });
+}
+
 void CurveRun::SplitAtCorners()
 {
   const int w = std::max(1, static_cast<int>(std::lround(CornerWindow * this->S / this->H)));
+  const int wide = 2 * w;
+  std::vector<vtkIdType> ids;
   for (const Chain& chain : this->ExtractChains())
   {
     const int count = static_cast<int>(chain.Ids.size()) - (chain.Closed ? 1 : 0);
@@ -1812,6 +1825,20 @@ void CurveRun::SplitAtCorners()
       if (a.norm() > 0.0 && b.norm() > 0.0)
       {
         turn[k] = a.normalized().dot(b.normalized());
+      }
+      // Where the detector typed a corner point within CornerNear s of the vertex, the turn
+      // across twice the window too: a trace that went round a corner rounds it over the
+      // corner's zone, where the fits of neither edge hold (the detector's own corner test looks
+      // twice its smallest scale's radius away for the same reason), so that within one window
+      // either side it turns less than it does from edge to edge.
+      if (wide < count && (chain.Closed || (k >= wide && k < count - wide)) &&
+        this->NearCorner(at(k), ids))
+      {
+        const V3 a2 = at(k) - at(k - wide), b2 = at(k + wide) - at(k);
+        if (a2.norm() > 0.0 && b2.norm() > 0.0)
+        {
+          turn[k] = std::min(turn[k], a2.normalized().dot(b2.normalized()));
+        }
       }
     }
     for (int k = first; k < last; ++k)

@@ -67,7 +67,9 @@
  *    (the input's active scalars and its `FeatureThreshold` field; border points count as
  *    supported), points that a rule other than the vote marked (clean clouds' unexplained fits
  *    beside a crease). Curves are split where they turn by more than 45 degrees within about
- *    3 s (a corner that a trace went round), and a curve shorter than JoinDistance s left
+ *    3 s (a corner that a trace went round), or within about 6 s where a point the detector
+ *    typed corner (FeatureType 3) lies within 2 s (a trace rounds a corner over the corner's
+ *    zone, where neither edge's fit holds), and a curve shorter than JoinDistance s left
  *    between two such splits (a rounded corner split at both of its turns) collapses into one
  *    corner; two curves that meet at a junction and go on within
  *    30 degrees of straight (over 2 FitRadius s) are one curve, the others there end on its vertex.
