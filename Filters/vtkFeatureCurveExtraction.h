@@ -43,9 +43,9 @@
  *    a crease are bridged from any distance: two free ends that point at each other (within 30
  *    degrees, over 2 FitRadius s: on a shallow crease under noise the traced ends wander by more
  *    than 15; each end proposes its 3 nearest such ends) are joined when all the cloud's points
- *    bend across the gap's line: over the whole gap, the two faces hinged on it
- *    differ in slope by a crease's angle (10 degrees) and by more than 3 standard errors (from
- *    the faces' residuals: the cloud's own noise), and no stretch of 2 FitRadius s along it looks
+ *    bend across the gap's line: over the whole gap, the two faces hinged on it differ in slope
+ *    by more than 3 standard errors, and by a crease's angle (10 degrees) or less than 3
+ *    standard errors below it (from the faces' residuals: the cloud's own noise), and no stretch of 2 FitRadius s along it looks
  *    flat (a bend nearer to none than to the gap's, and off the latter by more than 3 of its own
  *    errors, raised for the number of stretches tested: one in many looks flat by chance). The
  *    detector misses stretches of shallow creases; the cloud still shows them.
