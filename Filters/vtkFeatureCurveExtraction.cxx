@@ -60,6 +60,7 @@ const double AcrossNormals = std::cos(vtkMath::RadiansFromDegrees(30.0));
 const double CornerTurn = std::cos(vtkMath::RadiansFromDegrees(45.0)); // a sharper turn within CornerWindow splits
 constexpr double CornerWindow = 3.0;    // s
 constexpr double CornerNear = 2.0;      // s: a vertex this near a point typed corner is at one
+constexpr double CornerSupport = 2.0;   // s: a junction needs a feature point this near (the band)
 const double BridgeCone = std::cos(vtkMath::RadiansFromDegrees(30.0)); // an end joins what lies in this cone
 constexpr int BridgeProposals = 3; // the facing ends an end may be bridged to, nearest first
 constexpr int SmoothingPasses = 20;
@@ -1696,6 +1697,14 @@ void CurveRun::JoinEnds()
     for (size_t k = 0; valid && k < points.size(); ++k)
     {
       valid = (corner - points[k]).norm() <= this->J && (corner - points[k]).dot(lines[k]) > -this->H;
+    }
+    // A corner with no feature point within CornerSupport s lies beyond what the points show:
+    // ends that hook the same way (two pieces of one border where its points thin out) put the
+    // point nearest to their lines outside the band.
+    if (valid)
+    {
+      this->TraceSearch.Within(corner, CornerSupport * this->S, this->Scratch);
+      valid = !this->Scratch.empty();
     }
     if (!valid)
     {

@@ -28,7 +28,9 @@
  *    line is fitted again on the trace points within 4 band widths of the crease's line through
  *    the step (the band width: the median RMS distance of the trace points from their line fits).
  * 2. Joining. Ends within JoinDistance s of each other meet at the point nearest to the lines they
- *    point along (a corner, where three or more curves meet, or two borders at an angle), nearest
+ *    point along (a corner, where three or more curves meet, or two borders at an angle; at the
+ *    ends' mean where no feature point lies within 2 s of that point: ends that hook the same
+ *    way put it outside the band), nearest
  *    pairs first and only where all the ends of a junction lie within JoinDistance of each other
  *    (a row of ends along two close creases is not one junction); two ends that point at each
  *    other are bridged (from up to twice that distance when they face each other within 30
