@@ -47,9 +47,10 @@
  *    than 15; each end proposes its 3 nearest such ends) are joined when all the cloud's points
  *    bend across the gap's line: over the whole gap, the two faces hinged on it differ in slope
  *    by more than 3 standard errors, and by a crease's angle (10 degrees) or less than 3
- *    standard errors below it (from the faces' residuals: the cloud's own noise), and no stretch of 2 FitRadius s along it looks
- *    flat (a bend nearer to none than to the gap's, and off the latter by more than 3 of its own
- *    errors, raised for the number of stretches tested: one in many looks flat by chance). The
+ *    standard errors below it (from the faces' residuals: the cloud's own noise), and no
+ *    stretch of 2 FitRadius s along it looks flat (a bend nearer to none than to the gap's, and
+ *    off the latter by more than 3 of its own errors, raised for the number of stretches
+ *    tested: one in many looks flat by chance). The
  *    detector misses stretches of shallow creases; the cloud still shows them.
  *    Two free border ends that face each other within 30 degrees are joined where the cloud ends
  *    at the gap's line all along it: at every FitRadius s, the points within 2 FitRadius s lie on

@@ -578,7 +578,7 @@ struct GridQuery
           if (!useHeap)
           {
             // Large k: every point is written, and kept (the count moves on) when it is within
-            // the bound; no branch to mispredict on the about half of them that are not.
+            // the bound: no branch on the bound, which a cell's points pass or fail unpredictably.
             const size_t base = candidates.size();
             candidates.resize(base + static_cast<size_t>(last - first));
             Candidate* out = candidates.data() + base;
