@@ -2927,7 +2927,7 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
 {
   const double band = bandWidth * this->D;
   const unsigned char* voter = this->Voter.data();
-  vtkSMPThreadLocal<std::vector<double>> scratch;
+  vtkSMPThreadLocal<std::vector<double>> scratch, looseScratch;
   vtkSMPThreadLocal<std::array<std::vector<double>, 3>> feetScratch;
   vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType end) {
     double x[3], y[3];
@@ -2947,7 +2947,9 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
       // The members of the point's sheet within its scale vote; the fraction is of them.
       const uint64_t* sheet = this->Sheet(r);
       std::vector<double>& distances = scratch.Local();
+      std::vector<double>& loose = looseScratch.Local();
       distances.clear();
+      loose.clear();
       for (auto& f : feet)
       {
         f.clear();
@@ -2979,7 +2981,11 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
           ++in;
           if (this->Thinning)
           {
-            distances.push_back(this->HingeAcross(this->RowOf[other], v));
+            // Lines whose fit explains its points place the crease; a fit that straddles two
+            // features (explained at no scale) puts its line between them.
+            const vtkIdType fitted = this->RowOf[other];
+            (this->Fits[fitted].Explained ? distances : loose)
+              .push_back(this->HingeAcross(fitted, v));
           }
           if (this->Foot)
           {
@@ -3003,6 +3009,10 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
         }
       }
       vote[id] = static_cast<float>(in) / static_cast<float>(members - blind);
+      if (distances.empty())
+      {
+        distances.swap(loose); // no explained line: all of them
+      }
       if (!distances.empty())
       {
         const auto middle = distances.begin() + distances.size() / 2;

@@ -130,8 +130,10 @@
  *    the radius of its smallest scale: the directions spread wherever the reach holds two
  *    curves, as far along each curve as the reach; the corner is where they meet.
  * 9. ThinFeatures: the crease and corner points whose consensus distance to the crease, the
- *    median over the lines that vote for them (no single noisy fit places the line as well) of
- *    the distance from the line along the nearer of its two half-planes (0 beyond the line;
+ *    median over the lines that vote for them (no single noisy fit places the line as well;
+ *    only the lines whose fit explains its points, where any votes: a fit straddling two
+ *    features, explained at no scale, puts its line between them) of the distance from the
+ *    line along the nearer of its two half-planes (0 beyond the line;
  *    noise along a face's normal does not move a point across the face, where the straight
  *    distance to the line grows with it), is within half their local spacing, widened by the
  *    noise (a point at the crease pushed into the solid lies on a face, as far from the line as
