@@ -1220,11 +1220,12 @@ std::vector<Chain> CurveRun::MergeThrough(
 void CurveRun::BridgeAlongCreases()
 {
   // Each free end and the direction it points in, over 2 FitRadius back along its curve (the
-  // last quarter aside, as in MergeThrough): the line the gap continues.
+  // last quarter aside, as in MergeThrough): the line the gap continues; and the vertex where
+  // that direction starts (its anchor).
   const int w = std::max(1, static_cast<int>(std::lround(2.0 * this->R / this->H)));
   const int n = static_cast<int>(this->G.Vertices.size());
   std::vector<int> ends;
-  std::vector<V3> directions;
+  std::vector<V3> directions, anchors;
   for (int v = 0; v < n; ++v)
   {
     if (this->G.Degree(v) != 1)
@@ -1258,6 +1259,7 @@ void CurveRun::BridgeAlongCreases()
     {
       ends.push_back(v);
       directions.push_back(d.normalized());
+      anchors.push_back(this->G.Vertices[path[k / 4]]);
     }
   }
   // Pairs that point at each other, nearest first; each end bridged once. An end proposes its
@@ -1276,8 +1278,15 @@ void CurveRun::BridgeAlongCreases()
     {
       const V3 ab = this->G.Vertices[ends[b]] - this->G.Vertices[ends[a]];
       const double length = ab.norm();
+      // Facing from the ends, or from where their directions were taken: a trace's last
+      // vertices hook towards the side of the band where its points run out, and the two
+      // pieces of one crease across a hole in the sampling may hook apart.
       const double facing = std::min(ab.dot(directions[a]), -ab.dot(directions[b]));
-      if (length > 0.0 && facing >= BridgeCone * length)
+      const V3 anchored = anchors[b] - anchors[a];
+      const double anchoredFacing =
+        std::min(anchored.dot(directions[a]), -anchored.dot(directions[b]));
+      if (length > 0.0 &&
+        (facing >= BridgeCone * length || anchoredFacing >= BridgeCone * anchored.norm()))
       {
         gaps.push_back({ length, a, b });
       }

@@ -44,7 +44,8 @@
  *    After cleaning (stage 3), the ends it freed are joined again in the same way, and gaps along
  *    a crease are bridged from any distance: two free ends that point at each other (within 30
  *    degrees, over 2 FitRadius s: on a shallow crease under noise the traced ends wander by more
- *    than 15; each end proposes its 3 nearest such ends) are joined when all the cloud's points
+ *    than 15; from the ends, or from where those directions start, as the last vertices hook;
+ *    each end proposes its 3 nearest such ends) are joined when all the cloud's points
  *    bend across the gap's line: over the whole gap, the two faces hinged on it differ in slope
  *    by more than 3 standard errors, and by a crease's angle (10 degrees) or less than 3
  *    standard errors below it (from the faces' residuals: the cloud's own noise), and no
