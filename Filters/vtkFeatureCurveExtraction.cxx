@@ -1283,10 +1283,11 @@ void CurveRun::BridgeAlongCreases()
       // pieces of one crease across a hole in the sampling may hook apart.
       const double facing = std::min(ab.dot(directions[a]), -ab.dot(directions[b]));
       const V3 anchored = anchors[b] - anchors[a];
+      const double span = anchored.norm();
       const double anchoredFacing =
         std::min(anchored.dot(directions[a]), -anchored.dot(directions[b]));
       if (length > 0.0 &&
-        (facing >= BridgeCone * length || anchoredFacing >= BridgeCone * anchored.norm()))
+        (facing >= BridgeCone * length || (span > 0.0 && anchoredFacing >= BridgeCone * span)))
       {
         gaps.push_back({ length, a, b });
       }
