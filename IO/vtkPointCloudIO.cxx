@@ -804,6 +804,47 @@ bool CheckDeclaredSizes(const std::string& fileName, double fileSize, std::strin
   return true;
 }
 
+// Whether a block of `count` bytes for the DataArray tag at `tag` of `head` (its text: `array`)
+// holds as many points as its piece's NumberOfPoints, where it is the piece's Points array (VTK
+// reads that many and drops or leaves unread the rest, or fills the missing ones with zeros);
+// false, with `error`, where it does not.
+bool PointsFitBlock(const std::string& fileName, const std::string& head, size_t tag,
+  const std::string& array, uint64_t count, std::string& error)
+{
+  const size_t piece = head.rfind("<Piece", tag);
+  const size_t points = head.rfind("<Points", tag);
+  if (piece == std::string::npos || points == std::string::npos || points < piece ||
+    head.find("</Points>", points) < tag)
+  {
+    return true;
+  }
+  const std::string pieceTag = head.substr(piece, head.find('>', piece) - piece);
+  const std::string declared = TagAttribute(pieceTag, "NumberOfPoints");
+  const int bytesPerValue = BytesPerValue(TagAttribute(array, "type"));
+  uint64_t n = 0, components = 3;
+  const auto parsedPoints = std::from_chars(declared.data(), declared.data() + declared.size(), n);
+  const std::string componentsText = TagAttribute(array, "NumberOfComponents");
+  if (!componentsText.empty())
+  {
+    const char* c = componentsText.data();
+    std::from_chars(c, c + componentsText.size(), components);
+  }
+  if (bytesPerValue == 0 || parsedPoints.ec != std::errc() || components == 0 || components > 64)
+  {
+    return true; // VTK's reader says what is wrong with those
+  }
+  const uint64_t per = components * static_cast<uint64_t>(bytesPerValue);
+  if (n > count / per || n * per != count)
+  {
+    error = fileName + ": a piece declares NumberOfPoints=\"" + declared +
+      "\", but its Points array holds " + std::to_string(count) + " bytes, " +
+      (count % per == 0 ? std::to_string(count / per) + (count == per ? " point" : " points")
+                        : std::string("not a whole number of points"));
+    return false;
+  }
+  return true;
+}
+
 // A VTK XML file's raw appended data against the file's size: VTK's reader fills the arrays of a
 // file cut short (or an offset before the data) with zeros or with the bytes around, and says
 // nothing. Each uncompressed array's block (its byte count, then its bytes) must lie within the
@@ -836,7 +877,7 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
   const std::string compressor = TagAttribute(file, "compressor");
   const std::string encoding = TagAttribute(appendedTag, "encoding");
   const bool base64 = encoding == "base64";
-  if (encoding != "raw" && !(base64 && !compressor.empty()))
+  if (encoding != "raw" && !base64)
   {
     return true;
   }
@@ -1041,6 +1082,32 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
         ", past the end of the file (" + std::to_string(size) + " bytes): the file is cut short";
       return false;
     }
+    if (base64)
+    {
+      // The size field, then as many bytes as it declares: 4 characters for 3 bytes, at least
+      // (the field encoded on its own, as VTK writes it, or with the data), before the next
+      // block or the end of the appended data.
+      const auto after = std::upper_bound(starts.begin(), starts.end(), offset);
+      const bool lastBlock = after == starts.end();
+      const uint64_t blockEnd = lastBlock ? (dataEnd >= start ? dataEnd - start : 0) : *after;
+      const uint64_t room = blockEnd >= offset ? blockEnd - offset : 0;
+      uint64_t count = 0;
+      if (!word(offset, 0, count) || count > size ||
+        (4 * (static_cast<uint64_t>(headerBytes) + count) + 2) / 3 > room)
+      {
+        error = fileName + ": " + what + " at appended offset " + std::to_string(offset) +
+          " declares " + std::to_string(count) + " bytes, more than the " +
+          std::to_string(room) + " base64 characters before " +
+          (lastBlock ? std::string("the end of the appended data") : std::string("the next block")) +
+          " can hold: the file is cut short, or the size field is corrupt";
+        return false;
+      }
+      if (!PointsFitBlock(fileName, head, tag, array, count, error))
+      {
+        return false;
+      }
+      continue;
+    }
     const uint64_t at = start + offset;
     unsigned char bytes[8] = { 0 };
     in.clear();
@@ -1085,39 +1152,8 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
         std::to_string(size) + ": the file is cut short";
       return false;
     }
-    // The points of a piece: as many as its NumberOfPoints (VTK reads that many and drops or
-    // leaves unread the rest).
-    const size_t piece = head.rfind("<Piece", tag);
-    const size_t points = head.rfind("<Points", tag);
-    if (piece == std::string::npos || points == std::string::npos || points < piece ||
-      head.find("</Points>", points) < tag)
+    if (!PointsFitBlock(fileName, head, tag, array, count, error))
     {
-      continue;
-    }
-    const std::string pieceTag = head.substr(piece, head.find('>', piece) - piece);
-    const std::string declared = TagAttribute(pieceTag, "NumberOfPoints");
-    const int bytesPerValue = BytesPerValue(TagAttribute(array, "type"));
-    uint64_t n = 0, components = 3;
-    const auto parsedPoints =
-      std::from_chars(declared.data(), declared.data() + declared.size(), n);
-    const std::string componentsText = TagAttribute(array, "NumberOfComponents");
-    if (!componentsText.empty())
-    {
-      const char* c = componentsText.data();
-      std::from_chars(c, c + componentsText.size(), components);
-    }
-    if (bytesPerValue == 0 || parsedPoints.ec != std::errc() || components == 0 ||
-      components > 64)
-    {
-      continue; // VTK's reader says what is wrong with those
-    }
-    const uint64_t per = components * static_cast<uint64_t>(bytesPerValue);
-    if (n > count / per || n * per != count)
-    {
-      error = fileName + ": a piece declares NumberOfPoints=\"" + declared +
-        "\", but its Points array holds " + std::to_string(count) + " bytes, " +
-        (count % per == 0 ? std::to_string(count / per) + (count == per ? " point" : " points")
-                          : std::string("not a whole number of points"));
       return false;
     }
   }
@@ -1128,6 +1164,102 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
       (TagAttribute(file, "header_type").empty() ? " (its default)" : "") +
       ": a corrupt header_type";
     return false;
+  }
+  return true;
+}
+
+// A VTK XML file's inline binary arrays against their size fields: VTK's reader fills the values
+// that a block cut short lacks with zeros, and says nothing. Each uncompressed array's base64 text
+// must hold its size field and the bytes that declares (4 characters for 3 bytes, the field
+// encoded on its own or with the data), and a piece's Points array its NumberOfPoints points.
+// Compressed blocks, whose sizes VTK's reader checks, pass.
+bool CheckInlineData(const std::string& fileName, std::string& error)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  std::string head;
+  const size_t appended = ReadXMLHead(in, head);
+  const size_t end = appended == std::string::npos ? head.size() : appended;
+  const size_t fileTag = head.find("<VTKFile");
+  const size_t fileTagEnd = fileTag == std::string::npos ? fileTag : head.find('>', fileTag);
+  if (fileTagEnd == std::string::npos)
+  {
+    return true; // VTK's parser reports the broken XML
+  }
+  const std::string file = head.substr(fileTag, fileTagEnd - fileTag);
+  if (!TagAttribute(file, "compressor").empty())
+  {
+    return true;
+  }
+  const int headerBytes = TagAttribute(file, "header_type") == "UInt64" ? 8 : 4;
+  const bool bigEndian = TagAttribute(file, "byte_order") == "BigEndian";
+  static const std::string alphabet =
+    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  for (const auto& [tag, array] : DataArrayTags(head, end))
+  {
+    if (TagAttribute(array, "format") != "binary" || (!array.empty() && array.back() == '/'))
+    {
+      continue;
+    }
+    const size_t open = head.find('>', tag) + 1;
+    // The data end where the next tag starts: an array's InformationKey elements follow it.
+    const size_t close = head.find('<', open);
+    if (close == std::string::npos || close > end)
+    {
+      continue; // past what was read: VTK's reader's to judge
+    }
+    // The characters of the text other than white space and padding (6 bits each), and from the
+    // first of them, the size field.
+    uint64_t characters = 0, count = 0;
+    std::vector<unsigned char> field;
+    uint32_t bits = 0;
+    int pending = 0;
+    for (size_t c = open; c < close; ++c)
+    {
+      const char ch = head[c];
+      const size_t d = alphabet.find(ch);
+      if (d == std::string::npos)
+      {
+        continue; // white space and padding; anything else is VTK's reader's to judge
+      }
+      ++characters;
+      if (field.size() < static_cast<size_t>(headerBytes))
+      {
+        bits = (bits << 6) | static_cast<uint32_t>(d);
+        pending += 6;
+        if (pending >= 8)
+        {
+          pending -= 8;
+          field.push_back(static_cast<unsigned char>(bits >> pending));
+          bits &= (1u << pending) - 1u;
+        }
+      }
+    }
+    const std::string name = TagAttribute(array, "Name");
+    const std::string what = fileName + ": " +
+      (name.empty() ? std::string("an unnamed array") : "array '" + name + "'");
+    if (field.size() < static_cast<size_t>(headerBytes))
+    {
+      error = what + " is binary (base64) and holds " + std::to_string(characters) +
+        " characters: not even its " + std::to_string(headerBytes) + "-byte size field";
+      return false;
+    }
+    for (int b = 0; b < headerBytes; ++b)
+    {
+      count = (count << 8) | field[static_cast<size_t>(bigEndian ? b : headerBytes - 1 - b)];
+    }
+    const uint64_t held = characters / 4 * 3 + (characters % 4) * 3 / 4;
+    if (count > held || held - count < static_cast<uint64_t>(headerBytes))
+    {
+      error = what + " declares " + std::to_string(count) + " bytes of binary (base64) data, " +
+        "but its text holds " + std::to_string(held >= static_cast<uint64_t>(headerBytes)
+            ? held - static_cast<uint64_t>(headerBytes) : 0) +
+        " after its size field: the file is cut short, or the size field is corrupt";
+      return false;
+    }
+    if (!PointsFitBlock(fileName, head, tag, array, count, error))
+    {
+      return false;
+    }
   }
   return true;
 }
@@ -1309,7 +1441,8 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   const bool vtkFormat = extension == "vtp" || extension == "vtu" || extension == "vtk";
   if ((extension == "vtp" || extension == "vtu") &&
     (!CheckDeclaredSizes(fileName, static_cast<double>(info.st_size), error) ||
-      !CheckAppendedData(fileName, static_cast<double>(info.st_size), error)))
+      !CheckAppendedData(fileName, static_cast<double>(info.st_size), error) ||
+      !CheckInlineData(fileName, error)))
   {
     return nullptr;
   }

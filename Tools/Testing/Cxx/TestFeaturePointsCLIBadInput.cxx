@@ -10,6 +10,7 @@
 #include "FeaturePointsTestFiles.h"
 #include "LASTestFile.h"
 
+#include "vtkBase64Utilities.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
@@ -21,6 +22,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include <cctype>
 #include <dirent.h>
 #include <fcntl.h>
 #include <sys/resource.h>
@@ -524,6 +526,83 @@ void FuzzedFiles()
   Check(::lstat(Path("dangling.csv").c_str(), &link) == 0 && S_ISLNK(link.st_mode) &&
       Slurp(Path("linked/new.csv")).compare(0, 6, "x,y,z,") == 0,
     "an output through a dangling link: the link was replaced or its target not written");
+}
+
+// VTP files with binary (base64) data cut short, inline or appended: VTK's reader fills the
+// missing values with zeros and says nothing; the command refuses them.
+void Base64Files()
+{
+  vtkNew<vtkFeatureModelSource> part;
+  part->SetNumberOfPoints(1500);
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputConnection(part->GetOutputPort());
+  writer->SetCompressorTypeToNone();
+  writer->SetHeaderTypeToUInt64();
+  writer->SetDataModeToBinary();
+  writer->SetFileName(Path("inline.vtp").c_str());
+  writer->Write();
+  ExpectSuccess("an inline binary VTP", { Path("inline.vtp"), Path("inline.csv"), "--quiet" });
+  const std::string whole = Slurp(Path("inline.vtp"));
+  // The Points array's text: from its tag's end to the next tag (its InformationKeys).
+  const size_t points = whole.find("<Points>");
+  const size_t open = points == std::string::npos ? points : whole.find('>', points + 8);
+  size_t close = open == std::string::npos ? open : whole.find('<', open);
+  while (close != std::string::npos && close > open &&
+    (std::isspace(whole[close - 1]) || whole[close - 1] == '='))
+  {
+    --close;
+  }
+  Check(close != std::string::npos && close > open + 1000, "inline.vtp: no Points array");
+  if (close != std::string::npos && close > open + 1000)
+  {
+    // 36,000 bytes of points after their 8-byte size field, in 48,000 characters after the
+    // field's 12: 400 fewer hold 35,700 bytes.
+    std::string cut = whole;
+    cut.erase(close - 400, 400);
+    Spit(Path("inline-cut.vtp"), cut);
+    ExpectFailure("an inline binary VTP cut short", { Path("inline-cut.vtp"), Path("o.csv") }, 1,
+      "inline-cut.vtp: array 'Points' declares 36000 bytes of binary (base64) data, but its text "
+      "holds 35700 after its size field: the file is cut short");
+  }
+  std::string fewer = whole;
+  const size_t declared = fewer.find("NumberOfPoints=\"1500\"");
+  Check(declared != std::string::npos, "inline.vtp: no NumberOfPoints=\"1500\"");
+  if (declared != std::string::npos)
+  {
+    fewer.replace(declared, 22, "NumberOfPoints=\"1400\"");
+    Spit(Path("inline-fewer.vtp"), fewer);
+    ExpectFailure("an inline binary VTP declaring fewer points", { Path("inline-fewer.vtp"),
+      Path("o.csv") }, 1, "a piece declares NumberOfPoints=\"1400\", but its Points array "
+                          "holds 36000 bytes, 1500 points");
+  }
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOn();
+  writer->SetFileName(Path("base64.vtp").c_str());
+  writer->Write();
+  ExpectSuccess("a base64 appended VTP", { Path("base64.vtp"), Path("base64.csv"), "--quiet" });
+  const std::string encoded = Slurp(Path("base64.vtp"));
+  // The Points block's size field (12 characters at its offset) made to declare 3,000 bytes
+  // more than the block holds before the next one.
+  std::string grown = encoded;
+  const size_t tag = grown.find("<DataArray", grown.find("<Points>"));
+  const size_t at = tag == std::string::npos ? tag : grown.find("offset=\"", tag);
+  const size_t data = grown.find("<AppendedData encoding=\"base64\">");
+  const size_t underscore = data == std::string::npos ? data : grown.find('_', data);
+  Check(at != std::string::npos && underscore != std::string::npos,
+    "base64.vtp: no Points offset or appended data");
+  if (at != std::string::npos && underscore != std::string::npos)
+  {
+    const size_t offset = std::stoul(grown.substr(at + 8));
+    const unsigned char size[8] = { 0x58, 0x98, 0, 0, 0, 0, 0, 0 }; // 39,000, little-endian
+    unsigned char field[13] = { 0 };
+    vtkBase64Utilities::Encode(size, 8, field);
+    grown.replace(underscore + 1 + offset, 12, reinterpret_cast<const char*>(field), 12);
+    Spit(Path("base64-grown.vtp"), grown);
+    ExpectFailure("a base64 appended VTP whose size field overruns its block",
+      { Path("base64-grown.vtp"), Path("o.csv") }, 1,
+      "array 'Points' at appended offset " + std::to_string(offset) +
+        " declares 39000 bytes, more than the 48012 base64 characters before the next block");
+  }
 }
 
 // The number after "features" in a run's summary (-1: none).
@@ -1118,6 +1197,7 @@ int main(int argc, char* argv[])
   const auto start = std::chrono::steady_clock::now();
   HugeCounts();
   FuzzedFiles();
+  Base64Files();
   CoincidentPoints();
   FarOutliers();
   WideFiles();
