@@ -2386,7 +2386,8 @@ V3 CurveRun::FitAlong(const std::vector<V3>& c, const std::vector<double>& arc, 
     {
       continue;
     }
-    const auto from = std::lower_bound(arc.begin(), arc.begin() + n, arc[k] + shift - reach - margin);
+    const auto from =
+      std::lower_bound(arc.begin(), arc.begin() + n, arc[k] + shift - reach - margin);
     const auto to = std::upper_bound(from, arc.begin() + n, arc[k] + shift + reach + margin);
     if (from < to)
     {

@@ -1098,7 +1098,8 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
         error = fileName + ": " + what + " at appended offset " + std::to_string(offset) +
           " declares " + std::to_string(count) + " bytes, more than the " +
           std::to_string(room) + " base64 characters before " +
-          (lastBlock ? std::string("the end of the appended data") : std::string("the next block")) +
+          (lastBlock ? std::string("the end of the appended data")
+                     : std::string("the next block")) +
           " can hold: the file is cut short, or the size field is corrupt";
         return false;
       }

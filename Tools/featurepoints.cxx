@@ -517,7 +517,8 @@ void PrintHelp()
     "                        FeatureType, CreaseAngle, Length; point array Tangent), .csv (one\n"
     "                        line per vertex: x, y, z, CurveId, Tangent) or .obj (l lines);\n"
     "                        the output gets CurveId, --screenshot draws the curves\n"
-    "  --size WxH            picture size (default 1200x900; at most 4096x4096 pixels)\n"
+    "  --size WxH            picture size (default 1200x900; each side 16 to 8192, at most\n"
+    "                        16.8 megapixels, as 4096x4096)\n"
     "  --threads N           number of threads (default: all cores)\n"
     "  --quiet               print nothing but errors\n"
     "  --help                this text\n"
@@ -979,7 +980,9 @@ void ReadPictureSize(const std::string& v, Settings& s)
   if (std::sscanf(v.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 16 || h < 16 || w > 8192 ||
     h > 8192)
   {
-    Fail(ExitUsage, "--size takes WIDTHxHEIGHT in pixels, each from 16 to 8192; got '" + v + "'");
+    Fail(ExitUsage,
+      "--size takes WIDTHxHEIGHT in pixels, each from 16 to 8192 (at most 16.8 megapixels); got '" +
+        v + "'");
   }
   if (static_cast<long long>(w) * h > MaxPicturePixels)
   {
