@@ -804,6 +804,15 @@ bool CheckDeclaredSizes(const std::string& fileName, double fileSize, std::strin
   return true;
 }
 
+// The value of a base64 digit (0-63); -1 for any other character ('=' included).
+int Base64Digit(char c)
+{
+  static const std::string alphabet =
+    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const size_t d = alphabet.find(c);
+  return c != '\0' && d != std::string::npos ? static_cast<int>(d) : -1;
+}
+
 // Whether a block of `count` bytes for the DataArray tag at `tag` of `head` (its text: `array`)
 // holds as many points as its piece's NumberOfPoints, where it is the piece's Points array (VTK
 // reads that many and drops or leaves unread the rest, or fills the missing ones with zeros);
@@ -925,16 +934,14 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
     {
       return false;
     }
-    static const std::string alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::vector<unsigned char> decoded;
     for (size_t g = 0; g < chars; g += 4)
     {
       uint32_t v = 0;
       for (size_t c = 0; c < 4; ++c)
       {
-        const size_t d = text[g + c] == '=' ? 0 : alphabet.find(text[g + c]);
-        if (d == std::string::npos)
+        const int d = text[g + c] == '=' ? 0 : Base64Digit(text[g + c]);
+        if (d < 0)
         {
           return false;
         }
@@ -1193,8 +1200,6 @@ bool CheckInlineData(const std::string& fileName, std::string& error)
   }
   const int headerBytes = TagAttribute(file, "header_type") == "UInt64" ? 8 : 4;
   const bool bigEndian = TagAttribute(file, "byte_order") == "BigEndian";
-  static const std::string alphabet =
-    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   for (const auto& [tag, array] : DataArrayTags(head, end))
   {
     if (TagAttribute(array, "format") != "binary" || (!array.empty() && array.back() == '/'))
@@ -1217,8 +1222,8 @@ bool CheckInlineData(const std::string& fileName, std::string& error)
     for (size_t c = open; c < close; ++c)
     {
       const char ch = head[c];
-      const size_t d = alphabet.find(ch);
-      if (d == std::string::npos)
+      const int d = Base64Digit(ch);
+      if (d < 0)
       {
         continue; // white space and padding; anything else is VTK's reader's to judge
       }
