@@ -721,11 +721,10 @@ int BytesPerValue(const std::string& type)
 // compression ratio (raw, base64 and ascii data hold fewer values than bytes; zlib and LZ4 no more
 // than that): NumberOfComponents a whole number from 1, and one tuple, or every point's, within
 // that. Files compressed with LZMA, whose ratio has no such bound, are VTK's reader's to judge.
-bool CheckDeclaredSizes(const std::string& fileName, double fileSize, std::string& error)
+// head, end: the file's XML up to its AppendedData tag, and where that starts (ReadXMLHead()).
+bool CheckDeclaredSizes(const std::string& fileName, double fileSize, const std::string& head,
+  size_t end, std::string& error)
 {
-  std::ifstream in(fileName, std::ios::binary);
-  std::string head;
-  const size_t end = ReadXMLHead(in, head);
   const size_t fileTag = head.find("<VTKFile");
   if (fileTag == std::string::npos ||
     TagAttribute(head.substr(fileTag, head.find('>', fileTag) - fileTag), "compressor") ==
@@ -1181,11 +1180,10 @@ bool CheckAppendedData(const std::string& fileName, double fileSize, std::string
 // must hold its size field and the bytes that declares (4 characters for 3 bytes, the field
 // encoded on its own or with the data), and a piece's Points array its NumberOfPoints points.
 // Compressed blocks, whose sizes VTK's reader checks, pass.
-bool CheckInlineData(const std::string& fileName, std::string& error)
+// head, appended: as for CheckDeclaredSizes().
+bool CheckInlineData(
+  const std::string& fileName, const std::string& head, size_t appended, std::string& error)
 {
-  std::ifstream in(fileName, std::ios::binary);
-  std::string head;
-  const size_t appended = ReadXMLHead(in, head);
   const size_t end = appended == std::string::npos ? head.size() : appended;
   const size_t fileTag = head.find("<VTKFile");
   const size_t fileTagEnd = fileTag == std::string::npos ? fileTag : head.find('>', fileTag);
@@ -1445,12 +1443,17 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
   }
 
   const bool vtkFormat = extension == "vtp" || extension == "vtu" || extension == "vtk";
-  if ((extension == "vtp" || extension == "vtu") &&
-    (!CheckDeclaredSizes(fileName, static_cast<double>(info.st_size), error) ||
-      !CheckAppendedData(fileName, static_cast<double>(info.st_size), error) ||
-      !CheckInlineData(fileName, error)))
+  if (extension == "vtp" || extension == "vtu")
   {
-    return nullptr;
+    std::ifstream in(fileName, std::ios::binary);
+    std::string head;
+    const size_t appended = ReadXMLHead(in, head);
+    if (!CheckDeclaredSizes(fileName, static_cast<double>(info.st_size), head, appended, error) ||
+      !CheckAppendedData(fileName, static_cast<double>(info.st_size), error) ||
+      !CheckInlineData(fileName, head, appended, error))
+    {
+      return nullptr;
+    }
   }
   if (extension == "vtk" && !CheckLegacyPoints(fileName, static_cast<double>(info.st_size), error))
   {
