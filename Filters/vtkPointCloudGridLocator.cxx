@@ -198,6 +198,13 @@ struct GridQuery
   {
     double D2;
     int32_t Id;
+    // Left unset: the large-k scans size their buffer, then write every entry.
+    Candidate() {} // NOLINT(modernize-use-equals-default)
+    Candidate(double d2, int32_t id)
+      : D2(d2)
+      , Id(id)
+    {
+    }
     bool operator<(const Candidate& o) const { return D2 < o.D2 || (D2 == o.D2 && Id < o.Id); }
   };
   struct BucketScratch
@@ -666,6 +673,112 @@ struct GridQuery
     }
     return nearest;
   }
+
+  // The slots of the cells that may hold a point within sqrt(bound) of some point of the box
+  // [lo, hi]: per row of cells, the run of cells whose box lies within that distance of the box
+  // (the distance to a row's cells falls then rises along it: the run is contiguous). Border
+  // cells are open on their outer side, as in BoxDistance2().
+  void SlotsNear(const double lo[3], const double hi[3], double bound,
+    std::vector<std::pair<int32_t, int32_t>>& ranges) const
+  {
+    const auto& g = *this->Grid;
+    ranges.clear();
+    const double reach = std::sqrt(bound);
+    const double from[3] = { lo[0] - reach, lo[1] - reach, lo[2] - reach };
+    const double to[3] = { hi[0] + reach, hi[1] + reach, hi[2] + reach };
+    int first[3], last[3];
+    g.CellOf(from, first);
+    g.CellOf(to, last);
+    // Squared gap along axis a between the box and the cells' slab c.
+    auto gap2 = [&](int a, int c) {
+      const double clo = c > 0 ? g.Origin[a] + c * g.Spacing : -VTK_DOUBLE_MAX;
+      const double chi = c < g.Dims[a] - 1 ? g.Origin[a] + (c + 1) * g.Spacing : VTK_DOUBLE_MAX;
+      const double d = std::max({ 0.0, clo - hi[a], lo[a] - chi });
+      return d * d;
+    };
+    for (int k = first[2]; k <= last[2]; ++k)
+    {
+      const double gz = gap2(2, k);
+      if (gz > bound)
+      {
+        continue;
+      }
+      for (int j = first[1]; j <= last[1]; ++j)
+      {
+        const double left = bound - gz - gap2(1, j);
+        if (left < 0.0)
+        {
+          continue;
+        }
+        int i0 = first[0], i1 = last[0];
+        while (i0 <= i1 && gap2(0, i0) > left)
+        {
+          ++i0;
+        }
+        while (i1 >= i0 && gap2(0, i1) > left)
+        {
+          --i1;
+        }
+        if (i0 <= i1)
+        {
+          const int32_t begin = g.CellStart[g.Index(i0, j, k)];
+          const int32_t end = g.CellStart[g.Index(i1, j, k) + 1];
+          if (begin < end)
+          {
+            ranges.emplace_back(begin, end);
+          }
+        }
+      }
+    }
+  }
+
+  // The K nearest of x (other than point id) among the slots of `ranges`, when at least K of
+  // them lie within sqrt(bound) and every point within that distance of x lies in the ranges:
+  // then no other point can be nearer than the K-th, and the answer is NearestK()'s (the same
+  // squared distances, the same order by (distance, id)). Returns false, writing nothing,
+  // when fewer than K lie within it.
+  bool NearestKInRanges(const double* x, int32_t id, double bound,
+    const std::vector<std::pair<int32_t, int32_t>>& ranges, int32_t* row, double& nearest,
+    double& kth, std::vector<Candidate>& candidates, BucketScratch& bucketScratch) const
+  {
+    const auto& g = *this->Grid;
+    size_t total = 0;
+    for (const auto& range : ranges)
+    {
+      total += static_cast<size_t>(range.second - range.first);
+    }
+    if (candidates.size() < total)
+    {
+      candidates.resize(total);
+    }
+    Candidate* out = candidates.data();
+    size_t kept = 0;
+    for (const auto& range : ranges)
+    {
+      const double* y = g.SortedPoints + 3 * static_cast<size_t>(range.first);
+      for (int32_t s = range.first; s < range.second; ++s, y += 3)
+      {
+        const int32_t other = g.SortedIds[s];
+        const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        out[kept] = Candidate{ d2, other };
+        kept += static_cast<size_t>((d2 <= bound) & (other != id));
+      }
+    }
+    if (kept < static_cast<size_t>(this->K))
+    {
+      return false;
+    }
+    candidates.resize(kept);
+    SortNearest(candidates, static_cast<size_t>(this->K), bucketScratch);
+    for (int n = 0; n < this->K; ++n)
+    {
+      row[n] = candidates[n].Id;
+    }
+    nearest = std::sqrt(candidates.front().D2);
+    kth = candidates[this->K - 1].D2;
+    return true;
+  }
 };
 
 // The batched query: one row per listed point of the grid, the queries taken in grid order (by
@@ -680,6 +793,7 @@ struct GridNeighborsWorker
   bool Distinct; // K = 1 only: the nearest point at a nonzero distance
   vtkSMPThreadLocal<std::vector<GridQuery::Candidate>> Candidates;
   vtkSMPThreadLocal<GridQuery::BucketScratch> Buckets;
+  vtkSMPThreadLocal<std::vector<std::pair<int32_t, int32_t>>> Ranges;
 
   void Initialize() {}
 
@@ -710,6 +824,11 @@ struct GridNeighborsWorker
     // Large k: the k-th squared distance of the previous query, a guess for this one (queries come
     // in grid order, so neighbouring queries follow each other). The result never depends on it.
     double hint = -1.0;
+    if (this->Query.K > 8 && !g.Tree && !g.HasDuplicates)
+    {
+      this->ByCell(begin, end, hint, candidates, bucketScratch);
+      return;
+    }
     for (vtkIdType o = begin; o < end; ++o)
     {
       // Queries in grid order read their coordinates in sequence, from the grid's own copy.
@@ -725,6 +844,69 @@ struct GridNeighborsWorker
   }
 
   void Reduce() {}
+
+  // Large k, the grid's queries a cell at a time: the cells near the cell's queries are found
+  // once for all of them (GridQuery::SlotsNear()) within 1.2 times the previous query's k-th
+  // distance, and each query compares the points of those cells. A query with fewer than k
+  // points within that distance is answered by NearestK(). The rows are NearestK()'s.
+  void ByCell(vtkIdType begin, vtkIdType end, double& hint,
+    std::vector<GridQuery::Candidate>& candidates, GridQuery::BucketScratch& bucketScratch)
+  {
+    const auto& g = *this->Query.Grid;
+    std::vector<std::pair<int32_t, int32_t>>& ranges = this->Ranges.Local();
+    for (vtkIdType o = begin; o < end;)
+    {
+      // The run of queries in the cell of the first.
+      const double* first = g.SortedPoints + 3 * static_cast<size_t>(this->Slots[o]);
+      int c[3];
+      g.CellOf(first, c);
+      const vtkIdType cell = g.Index(c[0], c[1], c[2]);
+      vtkIdType last = o + 1;
+      while (last < end && this->Slots[last] >= g.CellStart[cell] &&
+        this->Slots[last] < g.CellStart[cell + 1])
+      {
+        ++last;
+      }
+      double lo[3] = { first[0], first[1], first[2] };
+      double hi[3] = { first[0], first[1], first[2] };
+      for (vtkIdType q = o + 1; q < last; ++q)
+      {
+        const double* x = g.SortedPoints + 3 * static_cast<size_t>(this->Slots[q]);
+        for (int a = 0; a < 3; ++a)
+        {
+          lo[a] = std::min(lo[a], x[a]);
+          hi[a] = std::max(hi[a], x[a]);
+        }
+      }
+      const double bound = 1.44 * hint;
+      if (hint > 0.0)
+      {
+        this->Query.SlotsNear(lo, hi, bound, ranges);
+      }
+      for (; o < last; ++o)
+      {
+        const int32_t slot = this->Slots[o];
+        const vtkIdType r = this->Rows[o];
+        const double* x = g.SortedPoints + 3 * static_cast<size_t>(slot);
+        int32_t* row = this->Table + r * this->Query.K;
+        double nearest = 0.0, kth = 0.0;
+        if (hint > 0.0 &&
+          this->Query.NearestKInRanges(x, g.SortedIds[slot], bound, ranges, row, nearest, kth,
+            candidates, bucketScratch))
+        {
+          hint = kth;
+        }
+        else
+        {
+          nearest = this->Query.NearestK(x, g.SortedIds[slot], row, hint, candidates, bucketScratch);
+        }
+        if (this->Nearest)
+        {
+          this->Nearest[r] = nearest;
+        }
+      }
+    }
+  }
 };
 } // namespace
 
@@ -1163,7 +1345,7 @@ bool vtkPointCloudGridLocator::FindNearestNeighbors(int k, const std::vector<vtk
   const vtkIdType queries = static_cast<vtkIdType>(slots.size());
 
   GridNeighborsWorker worker{ { &g, k }, slots.data(), order.data(), table.data(),
-    nearestDistances ? nearestDistances->data() : nullptr, distinct && k == 1, {}, {} };
+    nearestDistances ? nearestDistances->data() : nullptr, distinct && k == 1, {}, {}, {} };
   const vtkIdType batch = std::max<vtkIdType>(20000, queries / 50);
   for (vtkIdType begin = 0; begin < queries; begin += batch)
   {
