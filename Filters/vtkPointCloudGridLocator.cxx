@@ -878,8 +878,11 @@ struct GridNeighborsWorker
           hi[a] = std::max(hi[a], x[a]);
         }
       }
+      // Only where the distance reaches past a cell: within a crowded cell (a dense spot of an
+      // uneven cloud) one query's rings read fewer cells than the cell's neighbours all around.
       const double bound = 1.44 * hint;
-      if (hint > 0.0)
+      const bool together = hint > 0.0 && bound >= g.Spacing * g.Spacing;
+      if (together)
       {
         this->Query.SlotsNear(lo, hi, bound, ranges);
       }
@@ -890,7 +893,7 @@ struct GridNeighborsWorker
         const double* x = g.SortedPoints + 3 * static_cast<size_t>(slot);
         int32_t* row = this->Table + r * this->Query.K;
         double nearest = 0.0, kth = 0.0;
-        if (hint > 0.0 &&
+        if (together &&
           this->Query.NearestKInRanges(x, g.SortedIds[slot], bound, ranges, row, nearest, kth,
             candidates, bucketScratch))
         {
