@@ -5,6 +5,8 @@
 //   ratio of its time to vtkPCANormalEstimation's and vtkPCACurvatureEstimation's (k = 15);
 // - the same figures for the default detector, vtkCreaseVotingFeatures (the CLI's --method crease);
 // - the voxel step with and without, on denser-feature and uniform clouds;
+// - the k nearest of every point (k = 15 and 150) with the project's grid against VTK's
+//   vtkStaticPointLocator, through the same batched, threaded query (vtkPointCloudNeighborhoods);
 // - the output with 1 thread against the output with all threads (bit-identical or not).
 //
 //   FeaturePointsScalingBenchmark [--sizes 100000,1000000,10000000] [--threads N] [--repeat R]
@@ -15,13 +17,16 @@
 #include "vtkFeatureModelSource.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkFloatArray.h"
+#include "vtkMath.h"
 #include "vtkPCACurvatureEstimation.h"
 #include "vtkPCANormalEstimation.h"
+#include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkStaticPointLocator.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -32,6 +37,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -150,6 +156,48 @@ double TimeVTK(vtkPolyData* cloud, int repeat)
     filter->SetInputData(cloud);
     filter->Update();
   });
+}
+
+// The k nearest of every point of the cloud, the locator built first (nullptr: the project's
+// grid); the table in `table`, the median time of `repeat` runs returned.
+double TimeNeighbours(vtkPolyData* cloud, int k, vtkAbstractPointLocator* locator, int repeat,
+  std::vector<int32_t>& table)
+{
+  std::vector<vtkIdType> ids(static_cast<size_t>(cloud->GetNumberOfPoints()));
+  std::iota(ids.begin(), ids.end(), vtkIdType(0));
+  return MedianSeconds(repeat, [&] {
+    vtkNew<vtkPointCloudNeighborhoods> neighbourhoods;
+    if (locator)
+    {
+      neighbourhoods->SetLocator(locator);
+    }
+    neighbourhoods->Build(cloud->GetPoints());
+    neighbourhoods->FindNearestNeighbors(k, ids, table);
+  });
+}
+
+// The points whose k-th nearest lies at another distance in the two tables (ties may come in
+// another order, the distances may not).
+vtkIdType KthDistanceMismatches(
+  vtkPoints* points, int k, const std::vector<int32_t>& a, const std::vector<int32_t>& b)
+{
+  vtkIdType mismatches = 0;
+  double x[3], y[3], z[3];
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    const int32_t p = a[i * k + k - 1], q = b[i * k + k - 1];
+    if (p < 0 || q < 0)
+    {
+      mismatches += (p < 0) != (q < 0);
+      continue;
+    }
+    points->GetPoint(i, x);
+    points->GetPoint(p, y);
+    points->GetPoint(q, z);
+    mismatches +=
+      vtkMath::Distance2BetweenPoints(x, y) != vtkMath::Distance2BetweenPoints(x, z) ? 1 : 0;
+  }
+  return mismatches;
 }
 
 bool SameArrays(vtkPolyData* a, vtkPolyData* b)
@@ -298,6 +346,29 @@ int main(int argc, char* argv[])
       std::printf("%10lld %-8s %10.3f %10.3f %8.3f %10lld\n", static_cast<long long>(n),
         factor > 1 ? "denser" : "uniform", with[mid], without[mid], ratio[mid],
         static_cast<long long>(RunFilter(cloud, true).Features));
+    }
+  }
+
+  // The k nearest of every point: the project's grid and VTK's static point locator through the
+  // same batched, threaded query; the same k-th distance for every point.
+  {
+    const vtkIdType n = std::min<vtkIdType>(sizes.front(), 1000000);
+    vtkSmartPointer<vtkPolyData> cloud = MakeCloud(n, 3.0);
+    std::printf("\n%10s %4s %10s %22s %8s %10s   (the %lld points' k nearest, build included; "
+                "medians of %d runs, 1 of VTK's at k = 150)\n",
+      "points", "k", "grid s", "vtkStaticPointLocator s", "ratio", "k-th differ",
+      static_cast<long long>(n), repeat);
+    for (int k : { 15, 150 })
+    {
+      std::vector<int32_t> ours, theirs;
+      const double grid = TimeNeighbours(cloud, k, nullptr, repeat, ours);
+      vtkNew<vtkStaticPointLocator> locator;
+      // (At k = 150 VTK's locator takes many times the grid's: one run.)
+      const double vtk = TimeNeighbours(cloud, k, locator, k > 15 ? 1 : repeat, theirs);
+      const vtkIdType differ = KthDistanceMismatches(cloud->GetPoints(), k, ours, theirs);
+      std::printf("%10lld %4d %10.3f %22.3f %8.2f %10lld\n", static_cast<long long>(n), k, grid,
+        vtk, grid / vtk, static_cast<long long>(differ));
+      ok = ok && differ == 0;
     }
   }
 
