@@ -260,9 +260,10 @@ void CompareBatched(const std::string& kind, int structure)
   const std::string name =
     kind + (structure == vtkPointCloudGridLocator::KD_TREE ? " (tree)" : " (grid)");
   long mismatches = 0;
-  // Every third point (the slots marked in an array over the grid), and every 40th (fewer than a
-  // sixteenth of the points: the listed rows sorted).
-  for (int stride : { 3, 40 })
+  // Every point (a cell's queries answered together for k > 8), every third (the slots marked in
+  // an array over the grid), and every 40th (fewer than a sixteenth of the points: the listed rows
+  // sorted).
+  for (int stride : { 1, 3, 40 })
   {
     std::vector<vtkIdType> ids;
     for (vtkIdType i = n - 1; i >= 0; i -= stride)
@@ -271,7 +272,7 @@ void CompareBatched(const std::string& kind, int structure)
     }
     ids.push_back(ids.front()); // one id twice
     ids.push_back(ids[1]);      // and another, after it
-    for (int k : { 1, 5, 12, 40 })
+    for (int k : { 1, 5, 12, 40, 150 })
     {
       std::vector<int32_t> table;
       std::vector<double> nearest;
