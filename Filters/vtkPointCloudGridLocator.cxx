@@ -683,7 +683,11 @@ struct GridQuery
   {
     const auto& g = *this->Grid;
     ranges.clear();
-    const double reach = std::sqrt(bound);
+    // A little beyond the bound: a rounding in the boxes' or the cells' coordinates (a point
+    // that the cell index puts in a cell whose box, as computed, misses it by an ulp) must not
+    // leave out a point within it.
+    const double reach = std::sqrt(bound) * (1.0 + 1e-9) + 1e-9 * g.Spacing;
+    bound = reach * reach;
     const double from[3] = { lo[0] - reach, lo[1] - reach, lo[2] - reach };
     const double to[3] = { hi[0] + reach, hi[1] + reach, hi[2] + reach };
     int first[3], last[3];
