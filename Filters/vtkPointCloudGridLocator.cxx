@@ -905,7 +905,8 @@ struct GridNeighborsWorker
         }
         else
         {
-          nearest = this->Query.NearestK(x, g.SortedIds[slot], row, hint, candidates, bucketScratch);
+          nearest =
+            this->Query.NearestK(x, g.SortedIds[slot], row, hint, candidates, bucketScratch);
         }
         if (this->Nearest)
         {
