@@ -486,6 +486,26 @@ struct GridQuery
     }
   }
 
+  // Large k: the points of slots [first, last) other than point `id` within `bound` of x, as
+  // candidates from out[kept] on (room for last - first of them); returns the new count. Every
+  // point is written, and kept (the count moves on) when it is within the bound: no branch on the
+  // bound, which a cell's points pass or fail unpredictably.
+  size_t KeepWithin(const double* x, int32_t id, double bound, int32_t first, int32_t last,
+    Candidate* out, size_t kept) const
+  {
+    const auto& g = *this->Grid;
+    const double* y = g.SortedPoints + 3 * static_cast<size_t>(first);
+    for (int32_t s = first; s < last; ++s, y += 3)
+    {
+      const int32_t other = g.SortedIds[s];
+      const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      out[kept] = Candidate{ d2, other };
+      kept += static_cast<size_t>((d2 <= bound) & (other != id));
+    }
+    return kept;
+  }
+
   // The K nearest points of x other than point `id` (-1: none skipped) into `row`, -1 past the
   // last one found; returns the distance to the nearest (0 when none). `hint`: see operator().
   double NearestK(const double* x, int32_t id, int32_t* row, double& hint,
@@ -584,22 +604,10 @@ struct GridQuery
           const int32_t first = g.CellStart[cell], last = g.CellStart[cell + 1];
           if (!useHeap)
           {
-            // Large k: every point is written, and kept (the count moves on) when it is within
-            // the bound: no branch on the bound, which a cell's points pass or fail unpredictably.
             const size_t base = candidates.size();
             candidates.resize(base + static_cast<size_t>(last - first));
-            Candidate* out = candidates.data() + base;
-            size_t kept = 0;
-            const double* y = g.SortedPoints + 3 * static_cast<size_t>(first);
-            for (int32_t s = first; s < last; ++s, y += 3)
-            {
-              const int32_t other = g.SortedIds[s];
-              const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
-              const double d2 = dx * dx + dy * dy + dz * dz;
-              out[kept] = Candidate{ d2, other };
-              kept += static_cast<size_t>((d2 <= bound) & (other != id));
-            }
-            candidates.resize(base + kept);
+            candidates.resize(
+              this->KeepWithin(x, id, bound, first, last, candidates.data(), base));
             return;
           }
           for (int32_t s = first; s < last; ++s)
@@ -755,19 +763,10 @@ struct GridQuery
     {
       candidates.resize(total);
     }
-    Candidate* out = candidates.data();
     size_t kept = 0;
     for (const auto& range : ranges)
     {
-      const double* y = g.SortedPoints + 3 * static_cast<size_t>(range.first);
-      for (int32_t s = range.first; s < range.second; ++s, y += 3)
-      {
-        const int32_t other = g.SortedIds[s];
-        const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
-        const double d2 = dx * dx + dy * dy + dz * dz;
-        out[kept] = Candidate{ d2, other };
-        kept += static_cast<size_t>((d2 <= bound) & (other != id));
-      }
+      kept = this->KeepWithin(x, id, bound, range.first, range.second, candidates.data(), kept);
     }
     if (kept < static_cast<size_t>(this->K))
     {
