@@ -79,12 +79,14 @@ struct vtkPointCloudGridLocator::SearchGrid
     return d2;
   }
   // Distance from coordinate xa to the slab of cells c along axis a.
-  double AxisGap(int a, int c, double xa) const
+  double AxisGap(int a, int c, double xa) const { return this->AxisGap(a, c, xa, xa); }
+  // Distance from the interval [lo, hi] to the slab of cells c along axis a.
+  double AxisGap(int a, int c, double lo, double hi) const
   {
-    const double lo = this->Origin[a] + c * this->Spacing;
-    return c > 0 && xa < lo
-      ? lo - xa
-      : (c < this->Dims[a] - 1 && xa > lo + this->Spacing ? xa - lo - this->Spacing : 0.0);
+    const double from = this->Origin[a] + c * this->Spacing;
+    return c > 0 && hi < from
+      ? from - hi
+      : (c < this->Dims[a] - 1 && lo > from + this->Spacing ? lo - from - this->Spacing : 0.0);
   }
   // The cells at Chebyshev distance `ring` from cell c: whole rows on the block's faces, the two
   // end cells of the rows inside it.
@@ -703,9 +705,7 @@ struct GridQuery
     g.CellOf(to, last);
     // Squared gap along axis a between the box and the cells' slab c.
     auto gap2 = [&](int a, int c) {
-      const double clo = c > 0 ? g.Origin[a] + c * g.Spacing : -VTK_DOUBLE_MAX;
-      const double chi = c < g.Dims[a] - 1 ? g.Origin[a] + (c + 1) * g.Spacing : VTK_DOUBLE_MAX;
-      const double d = std::max({ 0.0, clo - hi[a], lo[a] - chi });
+      const double d = g.AxisGap(a, c, lo[a], hi[a]);
       return d * d;
     };
     for (int k = first[2]; k <= last[2]; ++k)
