@@ -581,8 +581,6 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
     }
     if (feature)
     {
-      this->TraceIndex.push_back(static_cast<vtkIdType>(this->Points.size()));
-      this->TracePoints.push_back(x);
       if (offsets && (type == CONVEX || type == CONCAVE))
       {
         V3 offset;
@@ -592,10 +590,19 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
           this->Moved.push_back(x + offset);
         }
       }
-      // Without a score, every feature point supports a curve.
+      // Without a score, every feature point supports a curve. A crease point that no fit voted
+      // for (the detector's rule for points no fit explains at any scale) lies between features
+      // as often as on one: it carries no trace, which would hop through such points from one
+      // crease to the next across the face between them. Corners and borders carry traces.
       const double score = scores ? scores->GetTuple1(i) : threshold;
-      this->Supported.push_back(type == BORDER || !(score < SupportShare * threshold));
-      this->Scores.push_back(score);
+      const bool supported = type == BORDER || !(score < SupportShare * threshold);
+      if (supported || type == CORNER)
+      {
+        this->TraceIndex.push_back(static_cast<vtkIdType>(this->Points.size()));
+        this->TracePoints.push_back(x);
+        this->Supported.push_back(supported);
+        this->Scores.push_back(score);
+      }
     }
     this->Points.push_back(x);
     this->PointIds.push_back(i);

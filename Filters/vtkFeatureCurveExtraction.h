@@ -10,7 +10,13 @@
  * Every length below is in units of s, so the result does not depend on the cloud's units.
  *
  * The curves are built in stages:
- * 1. Tracing. The feature points are the trace points, but where they form no line while the
+ * 1. Tracing. The feature points are the trace points, except the crease points (FeatureType 1
+ *    or 2) scored below half the detector's threshold (the input's active scalars and its
+ *    `FeatureThreshold` field): points that no fit voted for, marked by the detector's rule for
+ *    points no fit explains at any scale. They lie between features as often as on one, and a
+ *    trace through them would hop from one crease to the next across the face between them
+ *    (parallel creases 8 s apart: 18 polylines for 12 creases with them, 12 without). Where the
+ *    trace points form no line while the
  *    normals around them show one crease direction (a strip of feature points over close parallel
  *    creases), only those whose score (the input's active scalars) reaches the median of the
  *    crease points within 2 s: the ridges of the score. From the most line-like of them not yet
