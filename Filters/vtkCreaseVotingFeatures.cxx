@@ -1941,20 +1941,24 @@ void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
     {
       held += count[high++];
     }
-    std::array<size_t, NoLink + 1> at{};
-    for (int w = low + 1; w <= high; ++w)
+    // Where each weight of the pass goes next; the other weights all go to one spare entry
+    // past the end and stay there (no branch: a sixteenth of the links are taken in a pass).
+    std::array<size_t, NoLink + 1> at, step{};
+    at.fill(held);
+    size_t next = 0;
+    for (int w = low; w < high; next += count[w++])
     {
-      at[w] = at[w - 1] + count[w - 1];
+      at[w] = next;
+      step[w] = 1;
     }
-    order.resize(held);
+    order.resize(held + 1);
     for (size_t slot = 0; slot < weight.size(); ++slot)
     {
       const int w = weight[slot];
-      if (w >= low && w < high)
-      {
-        order[at[w]++] = slot;
-      }
+      order[at[w]] = slot;
+      at[w] += step[w];
     }
+    order.resize(held);
     for (uint64_t slot : order)
     {
       const int32_t r = rows[slot / kn];
