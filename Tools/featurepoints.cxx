@@ -1567,6 +1567,8 @@ private:
     writer->SetStartPiece(Rank);
     writer->SetEndPiece(Rank);
     writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff(); // as vtkPointCloudIO writes a .vtp
+    writer->SetCompressorTypeToLZ4();
     writer->SetInputData(vtkPointCloudIO::WithXMLNames(written));
     vtkNew<ErrorFlag> writeError;
     writer->AddObserver(vtkCommand::ErrorEvent, writeError);
