@@ -46,6 +46,11 @@ using V3 = Eigen::Vector3d;
 const double MaxTurnPerStep = std::cos(vtkMath::RadiansFromDegrees(35.0)); // a trace stops at a sharper turn
 constexpr double MaxFlatness = 0.6;   // lambda2 / lambda1 of a line fit above this: not a line
 constexpr int MinFitPoints = 4;       // fewer trace points in a fit: nothing to follow
+// The fit radius grows where trace points are sparse (AdaptFitRadius), up to this many times
+// FitRadius: about 8 times sparser than a one-point-wide mask on a random sampling.
+constexpr double MaximumFitRadiusGrowth = 4.0;
+// A curve more than this many resampling steps long per vertex keeps its vertices (Resample).
+constexpr double MaximumStepsPerVertex = 1024.0;
 constexpr double CollisionRadius = 1.5; // s: a trace joins a vertex of another this close
 constexpr double CoverRadius = 2.5;     // s: trace points this close to a vertex seed no trace
 constexpr double AssignRadius = 3.0;    // s: feature points this close to a curve get its id
@@ -711,7 +716,11 @@ void CurveRun::AdaptFitRadius()
   }
   if (!reach.empty())
   {
-    this->R = std::max(this->R, 1.5 * featurepoints::UpperMedian(reach));
+    // At most MaximumFitRadiusGrowth times the given radius: trace points sparser than that are
+    // not a curve sampled by the cloud (outliers scattered far from a part, whose median reach
+    // would make the fits, and every length derived from them, as wide as the scatter).
+    this->R = std::min(std::max(this->R, 1.5 * featurepoints::UpperMedian(reach)),
+      MaximumFitRadiusGrowth * this->R);
   }
 }
 
@@ -2517,7 +2526,15 @@ std::vector<V3> Resample(const std::vector<V3>& x, double step)
     arc[k] = arc[k - 1] + (x[k] - x[k - 1]).norm();
   }
   const double length = arc.back();
-  const int segments = std::max(1, static_cast<int>(std::lround(length / step)));
+  // A curve's vertices lie a trace step or a bridged gap apart: pieces far more than that many
+  // steps long only come from degenerate input (points scattered over 1e38 spacings), where the
+  // resampled curve would not fit in memory. Such a curve keeps its vertices.
+  const double wanted = length / step;
+  if (!(wanted <= MaximumStepsPerVertex * static_cast<double>(x.size())))
+  {
+    return x;
+  }
+  const int segments = std::max(1, static_cast<int>(std::lround(wanted)));
   std::vector<V3> y{ x.front() };
   size_t j = 1;
   for (int k = 1; k < segments; ++k)

@@ -607,6 +607,34 @@ bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string
   return true;
 }
 
+// Why VTK's XML reader failed to decompress a file's data, where it says "Zlib error while
+// uncompressing data" whatever the compressor (VTK's LZ4 and LZMA compressors print zlib's text)
+// or only "Unknown error": the compressor the file declares, read from its VTKFile element. Empty
+// when the message is of another kind or the file declares no compressor.
+std::string XMLCompressionProblem(const std::string& fileName, const std::string& message)
+{
+  if (message.find("uncompressing") == std::string::npos && message != "Unknown error." &&
+    message != "Unknown error")
+  {
+    return {};
+  }
+  std::ifstream file(fileName, std::ios::binary);
+  std::string head(4096, '\0');
+  file.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(std::max<std::streamsize>(file.gcount(), 0)));
+  const size_t element = head.find("<VTKFile");
+  const size_t attribute = element == std::string::npos ? element : head.find("compressor=\"", element);
+  const size_t close = attribute == std::string::npos ? attribute : head.find('"', attribute + 12);
+  if (close == std::string::npos || head.find('>', element) < attribute)
+  {
+    return {};
+  }
+  const std::string compressor = head.substr(attribute + 12, close - attribute - 12);
+  return fileName + ": cannot read: its data do not decompress with " +
+    vtkPointCloudIO::MessageText(compressor.c_str()) +
+    ", the compressor it declares (corrupt or cut data, or data compressed otherwise)";
+}
+
 // Why VTK's legacy reader failed on an ASCII file, where it says only "Error reading ascii
 // data": the first coordinate of the data set's POINTS that is no finite number (a "nan", an
 // "inf", a word), or the end of the file before the declared count. Empty when the file is not
@@ -1569,7 +1597,11 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
   if (!updated || !message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const unsigned long code = reader->GetErrorCode();
-    const std::string legacy = extension == "vtk" ? LegacyPointsProblem(fileName) : std::string();
+    const std::string legacy = extension == "vtk" ? LegacyPointsProblem(fileName)
+      : extension == "vtp" || extension == "vtu"
+      ? XMLCompressionProblem(fileName,
+          !message.empty() ? message : std::string(vtkErrorCode::GetStringFromErrorCode(code)))
+      : std::string();
     if (!legacy.empty())
     {
       error = legacy;

@@ -559,6 +559,10 @@ void PrintHelp()
 // Messages and progress
 
 bool Quiet = false;
+// Set when every non-finite coordinate the method sees comes from the scaled frame (see
+// ScaledFrame): the method's warning about NaN or infinite coordinates is then replaced by the
+// program's own, which says why.
+bool FrameOverflowOnly = false;
 
 // Under mpiexec with more than one process: the processes (nullptr otherwise), and this one's rank.
 #ifdef FEATUREPOINTS_HAVE_MPI
@@ -634,6 +638,10 @@ public:
   }
   void DisplayWarningText(const char* text) override
   {
+    if (FrameOverflowOnly && std::strstr(text, "have NaN or infinite coordinates"))
+    {
+      return; // reported by the program (the far points of a scaled frame)
+    }
     if (!Quiet)
     {
       std::fprintf(
@@ -1270,9 +1278,21 @@ int ScaledFrameExponent(vtkPointSet* cloud)
   return power >= -64 && power <= 64 ? 0 : -power; // a few far outliers alone: left as they are
 }
 
+// The points of a cloud that fall out of range in its scaled frame: finite in the input, infinite
+// once scaled. A cloud that spans more than doubles can square (a part 1e-60 wide and a point at
+// 1e260) has no scale for both.
+struct FrameOverflow
+{
+  vtkIdType Count = 0;
+  vtkIdType First = -1;
+  vtkIdType NonFinite = 0; // points already NaN or infinite in the input
+};
+
 // The cloud with its coordinates multiplied by 2^exponent (double precision) and the same point
-// data: what the method runs on when ScaledFrameExponent() is not 0.
-vtkSmartPointer<vtkPolyData> ScaledFrame(vtkPointSet* cloud, int exponent)
+// data: what the method runs on when ScaledFrameExponent() is not 0. `overflow`: the points that
+// become infinite in it, which the method then skips.
+vtkSmartPointer<vtkPolyData> ScaledFrame(
+  vtkPointSet* cloud, int exponent, FrameOverflow* overflow = nullptr)
 {
   const vtkIdType n = cloud->GetNumberOfPoints();
   vtkNew<vtkPoints> points;
@@ -1282,9 +1302,19 @@ vtkSmartPointer<vtkPolyData> ScaledFrame(vtkPointSet* cloud, int exponent)
   for (vtkIdType i = 0; i < n; ++i)
   {
     cloud->GetPoint(i, x);
+    const bool finite = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
     for (double& c : x)
     {
       c = std::ldexp(c, exponent);
+    }
+    if (overflow && !finite)
+    {
+      ++overflow->NonFinite;
+    }
+    else if (overflow &&
+      !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+    {
+      overflow->First = overflow->Count++ == 0 ? i : overflow->First;
     }
     points->SetPoint(i, x);
   }
@@ -1844,7 +1874,20 @@ private:
           std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] }),
           exponent);
       }
-      this->Filter->SetInputData(ScaledFrame(this->Cloud, exponent));
+      FrameOverflow overflow;
+      this->Filter->SetInputData(ScaledFrame(this->Cloud, exponent, &overflow));
+      FrameOverflowOnly = overflow.Count > 0 && overflow.NonFinite == 0;
+      if (overflow.Count > 0 && !Quiet)
+      {
+        double x[3];
+        this->Cloud->GetPoint(overflow.First, x);
+        std::fprintf(stderr,
+          "featurepoints: warning: %s: %lld point(s) lie too far from the rest of the cloud to "
+          "share its scale (the first is point %lld, at %.3g %.3g %.3g): no power of two holds "
+          "both within double precision; they are skipped: scores 0, never feature points\n",
+          s.Input.c_str(), static_cast<long long>(overflow.Count),
+          static_cast<long long>(overflow.First), x[0], x[1], x[2]);
+      }
     }
     else
     {
