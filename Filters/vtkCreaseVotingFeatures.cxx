@@ -227,11 +227,14 @@ double FitHeights(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
   }
   const Eigen::Vector3d e1 = n.unitOrthogonal();
   const Eigen::Vector3d e2 = n.cross(e1);
-  double radius = 0.0;
+  // The largest squared distance, then its root: the root of each (norm()) is the same maximum,
+  // since the square root is monotone.
+  double radius2 = 0.0;
   for (const Eigen::Vector3d& q : p)
   {
-    radius = std::max(radius, (q - c).norm());
+    radius2 = std::max(radius2, (q - c).squaredNorm());
   }
+  const double radius = std::sqrt(radius2);
   if (!(radius > 0.0))
   {
     return planeRss;
@@ -253,8 +256,11 @@ double FitHeights(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
     return a;
   };
   // The rows are kept for the residual's pass (this thread's scratch: no allocation per fit).
-  thread_local std::vector<Eigen::Matrix<double, Terms + 1, 1>> rows;
-  rows.resize(p.size());
+  // Read through a pointer taken once: each use of a thread_local of a shared library is a call
+  // (__tls_get_addr), which the compiler repeats inside the loops (450 calls per fit).
+  thread_local std::vector<Eigen::Matrix<double, Terms + 1, 1>> threadRows;
+  threadRows.resize(p.size());
+  Eigen::Matrix<double, Terms + 1, 1>* const rows = threadRows.data();
   Eigen::Matrix<double, Terms, Terms> ata = Eigen::Matrix<double, Terms, Terms>::Zero();
   Row ath = Row::Zero();
   double h = 0.0;
@@ -288,8 +294,9 @@ double FitHeights(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& 
     *bend = hessian.eigenvalues().cwiseAbs().maxCoeff();
   }
   double rss = 0.0;
-  for (const Eigen::Matrix<double, Terms + 1, 1>& a : rows)
+  for (size_t j = 0; j < p.size(); ++j)
   {
+    const Eigen::Matrix<double, Terms + 1, 1>& a = rows[j];
     const double r = a.template head<Terms>().dot(x) - a[Terms];
     if (across)
     {
@@ -499,8 +506,9 @@ double SplitHeights(
   {
     return 0.0;
   }
-  thread_local std::vector<double> heights;
-  heights.resize(m);
+  thread_local std::vector<double> threadHeights; // read through a pointer (see FitHeights)
+  threadHeights.resize(m);
+  double* const heights = threadHeights.data();
   double total = 0.0;
   for (size_t j = 0; j < m; ++j)
   {
@@ -593,8 +601,9 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
     return fit;
   }
   // Split by the direction in which the (consistently oriented) normals vary most.
-  thread_local std::vector<Eigen::Vector3d> oriented;
-  oriented.resize(m);
+  thread_local std::vector<Eigen::Vector3d> threadOriented; // through a pointer (FitHeights)
+  threadOriented.resize(m);
+  Eigen::Vector3d* const oriented = threadOriented.data();
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (size_t j = 0; j < m; ++j)
   {
@@ -3108,16 +3117,21 @@ void CreaseRun::GatherSheetNearest(
   const int length = featurepoints::RowLength(row, this->KFit);
   const uint64_t* sheet = this->Sheet(r);
   double x[3], y[3];
-  q.clear();
+  q.resize(3 * static_cast<size_t>(std::max(kb, 0)));
   this->Reader.Get(this->Ids[r], x);
-  for (int j = 0; j < length && static_cast<int>(q.size()) < 3 * kb; ++j)
+  size_t n = 0;
+  for (int j = 0; j < length && n < q.size(); ++j)
   {
     if (Reached(sheet, j + 1))
     {
       this->Reader.Get(row[j], y);
-      q.insert(q.end(), { y[0] - x[0], y[1] - x[1], y[2] - x[2] });
+      q[n] = y[0] - x[0];
+      q[n + 1] = y[1] - x[1];
+      q[n + 2] = y[2] - x[2];
+      n += 3;
     }
   }
+  q.resize(n);
 }
 
 void CreaseRun::FindBorders(

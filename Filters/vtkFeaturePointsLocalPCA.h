@@ -152,16 +152,27 @@ inline bool LocalPCA(const double* q, int count, bool withOrigin, const double o
     mean += Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
   }
   mean /= m;
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  // The upper triangle, summed in the points' order, then mirrored: v_i v_j and v_j v_i are the
+  // same product, so this is the full outer-product sum, entry for entry.
+  double c[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // xx xy xz yy yz zz
+  auto add = [&c](double x, double y, double z) {
+    c[0] += x * x;
+    c[1] += x * y;
+    c[2] += x * z;
+    c[3] += y * y;
+    c[4] += y * z;
+    c[5] += z * z;
+  };
   for (int j = 0; j < count; ++j)
   {
-    const Eigen::Vector3d v = Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]) - mean;
-    cov += v * v.transpose();
+    add(q[3 * j] - mean[0], q[3 * j + 1] - mean[1], q[3 * j + 2] - mean[2]);
   }
   if (withOrigin)
   {
-    cov += mean * mean.transpose();
+    add(mean[0], mean[1], mean[2]);
   }
+  Eigen::Matrix3d cov;
+  cov << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
   if (!cov.allFinite())
   {
     return false;

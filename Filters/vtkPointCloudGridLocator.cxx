@@ -212,26 +212,34 @@ struct GridQuery
   struct BucketScratch
   {
     std::vector<Candidate> Sorted;
+    std::vector<int32_t> Bucket;
     std::vector<int32_t> Start;
   };
 
   // Sorts the candidates by (distance, id) and keeps the first `keep`: a bucket sort on the
   // squared distance (about one candidate per bucket, buckets in distance order, each bucket then
   // sorted exactly), which costs a few passes where nth_element and sort compare and mispredict
-  // O(m log m) times. Buckets past the one that holds the keep-th candidate are never sorted.
-  static void SortNearest(std::vector<Candidate>& candidates, size_t keep, BucketScratch& scratch)
+  // O(m log m) times. Only the buckets up to the one that holds the keep-th candidate are filled
+  // and sorted; the rest share one overflow bucket that is never read. `largest`: an upper bound
+  // of the squared distances when the caller knows one (the bound it kept them within), else
+  // negative (then a pass finds the largest).
+  static void SortNearest(
+    std::vector<Candidate>& candidates, size_t keep, BucketScratch& scratch, double largest = -1.0)
   {
     const size_t m = candidates.size();
-    if (m <= 16)
+    if (m <= 16 || keep == 0)
     {
       std::sort(candidates.begin(), candidates.end());
       candidates.resize(std::min(m, keep));
       return;
     }
-    double largest = 0.0;
-    for (const Candidate& c : candidates)
+    if (!(largest >= 0.0) || !(largest < VTK_DOUBLE_MAX))
     {
-      largest = std::max(largest, c.D2);
+      largest = 0.0;
+      for (const Candidate& c : candidates)
+      {
+        largest = std::max(largest, c.D2);
+      }
     }
     const int32_t buckets = static_cast<int32_t>(m);
     // Monotone in D2: a larger distance never lands in an earlier bucket.
@@ -244,45 +252,68 @@ struct GridQuery
       candidates.resize(std::min(m, keep));
       return;
     }
-    auto bucketOf = [scale, buckets](double d2) {
-      return std::min(buckets - 1, static_cast<int32_t>(d2 * scale));
-    };
+    std::vector<int32_t>& bucket = scratch.Bucket;
     std::vector<int32_t>& start = scratch.Start;
-    start.assign(static_cast<size_t>(buckets) + 1, 0);
-    for (const Candidate& c : candidates)
+    bucket.resize(m);
+    start.assign(static_cast<size_t>(buckets) + 2, 0);
+    for (size_t i = 0; i < m; ++i)
     {
-      ++start[bucketOf(c.D2) + 1];
+      const int32_t b = std::min(buckets - 1, static_cast<int32_t>(candidates[i].D2 * scale));
+      bucket[i] = b;
+      ++start[b + 1];
     }
+    // Start of each bucket up to `last`, the one that holds the keep-th candidate; bucket
+    // last + 1 takes every later candidate.
+    const size_t kept = std::min(m, keep);
+    int32_t last = buckets - 1;
     for (int32_t b = 0; b < buckets; ++b)
     {
       start[b + 1] += start[b];
+      if (static_cast<size_t>(start[b + 1]) >= kept)
+      {
+        last = b;
+        break;
+      }
     }
+    const int32_t overflow = last + 1;
     std::vector<Candidate>& sorted = scratch.Sorted;
     sorted.resize(m);
+    // Scatter, start[b] moving on to the end of bucket b (the start of bucket b + 1).
+    for (size_t i = 0; i < m; ++i)
     {
-      // Scatter, using start[b] as the next free slot of bucket b (restored below).
-      for (const Candidate& c : candidates)
-      {
-        sorted[start[bucketOf(c.D2)]++] = c;
-      }
-      for (int32_t b = buckets; b > 0; --b)
-      {
-        start[b] = start[b - 1];
-      }
-      start[0] = 0;
+      sorted[start[std::min(bucket[i], overflow)]++] = candidates[i];
     }
-    size_t done = 0;
-    for (int32_t b = 0; b < buckets && done < keep; ++b)
+    for (int32_t b = 0, from = 0; b <= last; from = start[b], ++b)
     {
-      if (start[b + 1] - start[b] > 1)
+      const int32_t to = start[b];
+      if (to - from > 1)
       {
-        std::sort(sorted.begin() + start[b], sorted.begin() + start[b + 1]);
+        InsertionSort(sorted.data() + from, sorted.data() + to);
       }
-      done = static_cast<size_t>(start[b + 1]);
     }
-    const size_t kept = std::min(m, keep);
     std::copy(sorted.begin(), sorted.begin() + kept, candidates.begin());
     candidates.resize(kept);
+  }
+
+  // Sorts [first, last) by (distance, id): a bucket holds a few candidates, where std::sort's
+  // set-up costs more than the sort.
+  static void InsertionSort(Candidate* first, Candidate* last)
+  {
+    if (last - first > 16)
+    {
+      std::sort(first, last);
+      return;
+    }
+    for (Candidate* i = first + 1; i < last; ++i)
+    {
+      const Candidate c = *i;
+      Candidate* j = i;
+      for (; j > first && c < *(j - 1); --j)
+      {
+        *j = *(j - 1);
+      }
+      *j = c;
+    }
   }
 
   // The tree's queries (Grid->Tree set), with the grid's answers: nanoflann offers the slots
@@ -639,7 +670,7 @@ struct GridQuery
         }
         else if (!useHeap && static_cast<int>(candidates.size()) >= this->K)
         {
-          SortNearest(candidates, static_cast<size_t>(this->K), bucketScratch);
+          SortNearest(candidates, static_cast<size_t>(this->K), bucketScratch, bound);
           bound = candidates[this->K - 1].D2;
           if (everything || (gap > 0.0 && bound < gap * gap))
           {
@@ -773,7 +804,7 @@ struct GridQuery
       return false;
     }
     candidates.resize(kept);
-    SortNearest(candidates, static_cast<size_t>(this->K), bucketScratch);
+    SortNearest(candidates, static_cast<size_t>(this->K), bucketScratch, bound);
     for (int n = 0; n < this->K; ++n)
     {
       row[n] = candidates[n].Id;
