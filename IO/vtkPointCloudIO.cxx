@@ -635,6 +635,75 @@ std::string XMLCompressionProblem(const std::string& fileName, const std::string
     ", the compressor it declares (corrupt or cut data, or data compressed otherwise)";
 }
 
+// Why VTK's XML reader read no point, or failed on the Points array ("Cannot read points array
+// from Points in piece 0"), in words: a Points array of a type that holds no numbers (VTK reads
+// a String array as no point at all), or an ASCII Points array with a word where a coordinate
+// should be (VTK says the array "may be too short"). Empty when neither is found (VTK's message
+// or the caller's then stands). Reads at most the first 64 MB.
+std::string XMLPointsProblem(const std::string& fileName)
+{
+  std::ifstream file(fileName, std::ios::binary | std::ios::ate);
+  const std::streamoff size = file ? static_cast<std::streamoff>(file.tellg()) : 0;
+  file.seekg(0);
+  std::string text(static_cast<size_t>(std::min<std::streamoff>(
+                     std::max<std::streamoff>(size, 0), std::streamoff(64) << 20)),
+    '\0');
+  file.read(&text[0], static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(std::max<std::streamsize>(file.gcount(), 0)));
+  const size_t points = text.find("<Points");
+  const size_t array = points == std::string::npos ? points : text.find("<DataArray", points);
+  const size_t end = array == std::string::npos ? array : text.find('>', array);
+  if (end == std::string::npos)
+  {
+    return {};
+  }
+  const std::string tag = text.substr(array, end - array);
+  auto attribute = [&tag](const char* name) {
+    const std::string key = std::string(" ") + name + "=\"";
+    const size_t at = tag.find(key);
+    const size_t close = at == std::string::npos ? at : tag.find('"', at + key.size());
+    return close == std::string::npos ? std::string()
+                                      : tag.substr(at + key.size(), close - at - key.size());
+  };
+  const std::string type = attribute("type");
+  static const char* const numeric[] = { "Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32",
+    "Int64", "UInt64", "Float32", "Float64" };
+  if (!type.empty() &&
+    std::find_if(std::begin(numeric), std::end(numeric),
+      [&type](const char* t) { return type == t; }) == std::end(numeric))
+  {
+    return fileName + ": cannot read: its Points array is of type " +
+      vtkPointCloudIO::MessageText(type.c_str()) +
+      ", which holds no coordinates (Float32, Float64 or an integer type)";
+  }
+  if (attribute("format") != "ascii" || tag.back() == '/')
+  {
+    return {};
+  }
+  // The values up to the array's end tag: the first that is no number.
+  const size_t close = text.find('<', end);
+  std::istringstream values(text.substr(end + 1, close == std::string::npos ? std::string::npos
+                                                                           : close - end - 1));
+  long long index = 0;
+  for (std::string word; values >> word; ++index)
+  {
+    double value = 0.0;
+    const char* first = word.data() + (word.size() > 1 && word[0] == '+' ? 1 : 0);
+    const auto parsed = std::from_chars(first, word.data() + word.size(), value);
+    if (parsed.ec != std::errc() || parsed.ptr != word.data() + word.size())
+    {
+      if (word.size() > 40)
+      {
+        word = word.substr(0, 40) + "...";
+      }
+      return fileName + ": cannot read: its ASCII Points array holds '" +
+        vtkPointCloudIO::MessageText(word.c_str()) + "' as value " + std::to_string(index) +
+        " (point " + std::to_string(index / 3) + ", counting from 0), not a number";
+    }
+  }
+  return {};
+}
+
 // Why VTK's legacy reader failed on an ASCII file, where it says only "Error reading ascii
 // data": the first coordinate of the data set's POINTS that is no finite number (a "nan", an
 // "inf", a word), or the end of the file before the declared count. Empty when the file is not
@@ -696,6 +765,55 @@ std::string LegacyPointsProblem(const std::string& fileName)
   {
     return fileName + ": the POINTS line declares " + std::to_string(count) +
       " points; the file ends after " + std::to_string(read / 3) + " of them";
+  }
+  // The rest (cells, point and cell data): the first value that is no number, on a line that is
+  // not a section's or an array's header. A string array's values are words: nothing is said
+  // past its header.
+  static const std::set<std::string> keywords = { "POINT_DATA", "CELL_DATA", "SCALARS",
+    "LOOKUP_TABLE", "VECTORS", "NORMALS", "TEXTURE_COORDINATES", "TENSORS", "FIELD",
+    "COLOR_SCALARS", "METADATA", "INFORMATION", "NAME", "DATA", "VERTICES", "LINES", "POLYGONS",
+    "TRIANGLE_STRIPS", "CELLS", "CELL_TYPES", "OFFSETS", "CONNECTIVITY", "GLOBAL_IDS",
+    "PEDIGREE_IDS", "EDGE_FLAGS" };
+  static const std::set<std::string> types = { "bit", "unsigned_char", "char", "unsigned_short",
+    "short", "unsigned_int", "int", "unsigned_long", "long", "float", "double", "vtkIdType",
+    "vtktypeint64", "vtktypeuint64", "string", "utf8_string", "variant" };
+  while (std::getline(file, line))
+  {
+    ++number;
+    std::istringstream words(line);
+    std::vector<std::string> all;
+    for (std::string word; words >> word;)
+    {
+      all.push_back(word);
+    }
+    if (all.empty())
+    {
+      continue;
+    }
+    const bool header = keywords.count(all[0]) > 0 || (all.size() == 4 && types.count(all[3]));
+    if (header)
+    {
+      if (std::find(all.begin(), all.end(), "string") != all.end() ||
+        std::find(all.begin(), all.end(), "utf8_string") != all.end() ||
+        std::find(all.begin(), all.end(), "variant") != all.end())
+      {
+        return {};
+      }
+      continue;
+    }
+    for (size_t w = 0; w < all.size(); ++w)
+    {
+      const std::string& word = all[w];
+      double value = 0.0;
+      const char* end = word.data() + word.size();
+      const auto parsed = std::from_chars(word.data() + (word[0] == '+' ? 1 : 0), end, value);
+      if (parsed.ec != std::errc() || parsed.ptr != end || !std::isfinite(value))
+      {
+        return fileName + ":" + std::to_string(number) + ": value " + std::to_string(w + 1) +
+          " of the line ('" + (word.size() > 40 ? word.substr(0, 40) + "..." : word) +
+          "') is not a finite number, which VTK's legacy reader cannot read";
+      }
+    }
   }
   return {};
 }
@@ -1602,6 +1720,15 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
       ? XMLCompressionProblem(fileName,
           !message.empty() ? message : std::string(vtkErrorCode::GetStringFromErrorCode(code)))
       : std::string();
+    if (legacy.empty() && (extension == "vtp" || extension == "vtu") &&
+      message.find("Cannot read points array") != std::string::npos)
+    {
+      error = XMLPointsProblem(fileName);
+      if (!error.empty())
+      {
+        return nullptr;
+      }
+    }
     if (!legacy.empty())
     {
       error = legacy;
@@ -1622,6 +1749,14 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
     error = fileName + ": holds " + (output ? output->GetClassName() : std::string("no data")) +
       ", not a point set";
     return nullptr;
+  }
+  if (points->GetNumberOfPoints() == 0 && (extension == "vtp" || extension == "vtu"))
+  {
+    error = XMLPointsProblem(fileName);
+    if (!error.empty())
+    {
+      return nullptr; // else no point, and the caller says so
+    }
   }
   // A malformed legacy file can leave arrays shorter than the points.
   vtkPointData* pd = points->GetPointData();

@@ -651,6 +651,31 @@ void CompressedFiles()
   ::unlink(Path("packed.vtp").c_str());
 }
 
+void XMLPointsArrays()
+{
+  // VTK reads a String-typed Points array as no point at all, and says of a word in an ASCII
+  // Points array only that the array "may be too short" (found by fuzzing).
+  const std::string head = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+                           "byte_order=\"LittleEndian\">\n<PolyData><Piece NumberOfPoints=\"3\" "
+                           "NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
+                           "NumberOfPolys=\"0\">\n<Points><DataArray type=\"";
+  const std::string tail = "</DataArray></Points>\n</Piece></PolyData></VTKFile>\n";
+  Spit(Path("string-points.vtp"),
+    head + "String\" NumberOfComponents=\"3\" format=\"ascii\">48 0 48 0 48 0 48 0 48 0" + tail);
+  ExpectFailure("a VTP whose Points array holds strings",
+    { Path("string-points.vtp"), Path("o.csv") }, 1,
+    "string-points.vtp: cannot read: its Points array is of type String, which holds no "
+    "coordinates");
+  Spit(Path("word-points.vtp"),
+    head + "Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 +1 0 0 abc 1 0" + tail);
+  ExpectFailure("a VTP with a word among its ASCII points",
+    { Path("word-points.vtp"), Path("o.csv") }, 1,
+    "word-points.vtp: cannot read: its ASCII Points array holds 'abc' as value 6 (point 2, "
+    "counting from 0), not a number");
+  ::unlink(Path("string-points.vtp").c_str());
+  ::unlink(Path("word-points.vtp").c_str());
+}
+
 void FarOutliers()
 {
   // A unit cube's surface, then the same with 1 % of its points replaced by points up to 1e200
@@ -895,6 +920,12 @@ void LegacyFiles()
   Spit(Path("nan.vtk"), header + "POINTS 4 float\n0 0 0 1 nan 0 0 1 0\n0 0 1\n");
   ExpectFailure("legacy VTK with a nan token", { Path("nan.vtk"), Path("o.vtp") }, 1,
     "nan.vtk:6: coordinate 2 of point 2 ('nan') is not a finite number");
+  // In the point data (found by fuzzing): VTK's "Possible mismatch of datasize with declaration".
+  Spit(Path("nan-data.vtk"), header +
+      "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOINT_DATA 3\nSCALARS s float 1\nLOOKUP_TABLE "
+      "default\n1 nan 3\n");
+  ExpectFailure("legacy VTK with a nan in its point data", { Path("nan-data.vtk"), Path("o.vtp") },
+    1, "nan-data.vtk:10: value 2 of the line ('nan') is not a finite number");
   // What VTK's reader reads is not refused: a '+' and leading zeros in the count; field data
   // before the points whose array is named POINTS (its line is no data set's POINTS line).
   Spit(Path("plus.vtk"), header + "POINTS +0003 float\n0 0 0 1 0 0 0 1 0\n");
@@ -1342,6 +1373,7 @@ int main(int argc, char* argv[])
   Base64Files();
   CoincidentPoints();
   CompressedFiles();
+  XMLPointsArrays();
   FarOutliers();
   ScatteredFeatureCurves();
   WideFiles();
