@@ -2956,9 +2956,24 @@ void CreaseRun::CastVotes(double bandWidth, float* vote, vtkIdType first, vtkIdT
       const vtkIdType id = this->Ids[r];
       const int32_t* row = this->Row(r, buffer.data());
       const int count = featurepoints::RowLength(row, this->KFit);
-      this->Reader.Get(id, x);
       // The members of the point's sheet within its scale vote; the fraction is of them.
       const uint64_t* sheet = this->Sheet(r);
+      // No voter among them (most points of a part's faces): no vote, and nothing to measure.
+      bool anyVoter = false;
+      for (int j = -1, members = 0; j < count && members <= this->Scale[r] && !anyVoter; ++j)
+      {
+        if (Reached(sheet, j + 1))
+        {
+          ++members;
+          anyVoter = voter[j < 0 ? id : static_cast<vtkIdType>(row[j])] != 0;
+        }
+      }
+      if (!anyVoter)
+      {
+        vote[id] = 0.0f;
+        continue;
+      }
+      this->Reader.Get(id, x);
       std::vector<double>& distances = scratch.Local();
       std::vector<double>& loose = looseScratch.Local();
       distances.clear();
