@@ -2818,6 +2818,28 @@ void CopyPoints(vtkPointSet* input, vtkPolyData* output)
     output->SetVerts(vtkPointCloudNeighborhoods::MakeVertexCells(input->GetNumberOfPoints()));
   }
 }
+
+// Whether a point array has one tuple of `components` values per point.
+bool Shaped(vtkDataArray* array, int components, vtkIdType n)
+{
+  return array && array->GetNumberOfComponents() == components && array->GetNumberOfTuples() == n;
+}
+
+// A point array the curves may use: the array when it has one tuple of `components` values per
+// point, else nullptr (the curves do without it), with a warning from `self`.
+vtkDataArray* Usable(vtkAlgorithm* self, vtkDataArray* array, int components, vtkIdType n)
+{
+  if (!array || Shaped(array, components, n))
+  {
+    return array;
+  }
+  vtkWarningWithObjectMacro(self, << "The input's point array '"
+                                  << (array->GetName() ? array->GetName() : "(no name)")
+                                  << "' has " << array->GetNumberOfTuples() << " tuples of "
+                                  << array->GetNumberOfComponents() << " values for " << n
+                                  << " points, not " << components << " per point: not used.");
+  return nullptr;
+}
 } // namespace
 
 int vtkFeatureCurveExtraction::RequestData(
@@ -2838,6 +2860,14 @@ int vtkFeatureCurveExtraction::RequestData(
   {
     vtkErrorMacro("The input has no FeatureMask point array: give it a feature point detector's "
                   "output (vtkCreaseVotingFeatures).");
+    return 0;
+  }
+  if (mask && !Shaped(mask, 1, input->GetNumberOfPoints()))
+  {
+    vtkErrorMacro(<< "The input's FeatureMask has " << mask->GetNumberOfTuples() << " tuples of "
+                  << mask->GetNumberOfComponents() << " values for "
+                  << input->GetNumberOfPoints()
+                  << " points: give it a feature point detector's output, one value per point.");
     return 0;
   }
   CopyPoints(input, output);
@@ -2883,7 +2913,9 @@ int vtkFeatureCurveExtraction::RequestData(
 
   CurveRun run(s, this->FitRadius, this->StepLength, this->JoinDistance, this->MinimumLength);
   // The detector's score (its active scalars) and threshold, when it gives them.
-  vtkDataArray* scores = input->GetPointData()->GetScalars();
+  vtkDataArray* scores = Usable(this, input->GetPointData()->GetScalars(), 1, n);
+  vtkDataArray* types = Usable(this, input->GetPointData()->GetArray("FeatureType"), 1, n);
+  vtkDataArray* normals = Usable(this, input->GetPointData()->GetArray("Normals"), 3, n);
   vtkDataArray* thresholdArray = input->GetFieldData()->GetArray("FeatureThreshold");
   const double threshold = thresholdArray && thresholdArray->GetNumberOfTuples() > 0
     ? thresholdArray->GetTuple1(0)
@@ -2894,8 +2926,7 @@ int vtkFeatureCurveExtraction::RequestData(
   {
     offsets = nullptr;
   }
-  run.SelectPoints(input, mask, input->GetPointData()->GetArray("FeatureType"),
-    input->GetPointData()->GetArray("Normals"),
+  run.SelectPoints(input, mask, types, normals,
     scores && scores != mask && std::isfinite(threshold) && threshold > 0.0 ? scores : nullptr,
     threshold, offsets);
   this->UpdateProgress(0.1);
@@ -3058,8 +3089,8 @@ int vtkFeatureCurveExtraction::RequestData(
   // CurveId of the feature points; each curve's type and angle from its points.
   PointSearch sampleSearch;
   sampleSearch.Build(samples);
-  vtkDataArray* types = input->GetPointData()->GetArray("FeatureType");
-  vtkDataArray* angles = input->GetPointData()->GetArray("CreaseAngle");
+  vtkDataArray* angles =
+    Usable(this, input->GetPointData()->GetArray("CreaseAngle"), 1, input->GetNumberOfPoints());
   std::vector<std::array<int, 5>> typeCounts(curves.size(), { 0, 0, 0, 0, 0 });
   std::vector<double> angleSum(curves.size(), 0.0);
   std::vector<int> angleCount(curves.size(), 0);

@@ -29,6 +29,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <sstream>
 #include <vector>
 
 vtkCxxSetObjectMacro(vtkFeaturePointDetector, Locator, vtkAbstractPointLocator);
@@ -706,6 +707,24 @@ bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods*
 {
   if (!(d > 0.0))
   {
+    // Distinct points whose spacing squares to 0 or overflows (coordinates near 1e-160 or
+    // 1e160) look coincident: say why.
+    double bounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+    if (neighborhoods && neighborhoods->GetPoints())
+    {
+      neighborhoods->GetPoints()->GetBounds(bounds);
+    }
+    const double extent =
+      std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+    if (extent > 0.0 && (!(extent * extent > 0.0) || !std::isfinite(d) || extent > 1e150))
+    {
+      vtkWarningMacro(<< "The cloud spans " << extent
+                      << " units, where squares of distances underflow or overflow in double "
+                         "precision: scale its coordinates by a power of two that brings the "
+                         "extent near 1 (the featurepoints command does so itself). All scores "
+                         "are 0 and no point is a feature point.");
+      return false;
+    }
     vtkWarningMacro("All points coincide: the point spacing is 0, all scores are 0 and no point "
                     "is a feature point.");
     return false;
@@ -1045,6 +1064,45 @@ void vtkFeaturePointDetector::GatherScores(
   }
 }
 
+namespace
+{
+// The point arrays of `data` that hold one tuple per point (n), shallow copies, with the
+// attributes' flags: an array of another length (a malformed input) is left out with a warning
+// (from `reporter` when given), since copying it, or picking the feature points' tuples from it,
+// would read past its end.
+vtkSmartPointer<vtkPointData> PointArraysOfLength(
+  vtkPointData* data, vtkIdType n, vtkObject* reporter = nullptr)
+{
+  auto kept = vtkSmartPointer<vtkPointData>::New();
+  if (!data)
+  {
+    return kept;
+  }
+  kept->ShallowCopy(data);
+  for (int a = kept->GetNumberOfArrays() - 1; a >= 0; --a)
+  {
+    vtkAbstractArray* array = kept->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() != n)
+    {
+      std::ostringstream text;
+      text << "The point array '" << (array->GetName() ? array->GetName() : "(no name)")
+           << "' has " << array->GetNumberOfTuples() << " tuples for " << n
+           << " points: left out of the output.";
+      if (reporter)
+      {
+        vtkWarningWithObjectMacro(reporter, << text.str());
+      }
+      else
+      {
+        vtkGenericWarningMacro(<< text.str());
+      }
+      kept->RemoveArray(a);
+    }
+  }
+  return kept;
+}
+} // namespace
+
 int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* output,
   const std::vector<vtkDataArray*>& arrays, vtkUnsignedCharArray* mask)
 {
@@ -1088,7 +1146,7 @@ int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* out
   {
     full->SetPoints(vtkNew<vtkPoints>());
   }
-  full->GetPointData()->PassData(input->GetPointData());
+  full->GetPointData()->PassData(PointArraysOfLength(input->GetPointData(), n, this));
   for (vtkDataArray* a : arrays)
   {
     if (a)
@@ -1124,8 +1182,21 @@ int vtkFeaturePointDetector::AssembleOutput(vtkPointSet* input, vtkPolyData* out
 void vtkFeaturePointDetector::SelectFeaturePoints(
   vtkPolyData* full, vtkUnsignedCharArray* mask, vtkPolyData* output)
 {
+  if (!full || !output)
+  {
+    vtkGenericWarningMacro("SelectFeaturePoints needs a cloud and an output: nothing selected.");
+    return;
+  }
   const vtkIdType n = full->GetNumberOfPoints();
   vtkPoints* points = full->GetPoints();
+  if (mask && (mask->GetNumberOfTuples() != n || mask->GetNumberOfComponents() != 1))
+  {
+    vtkGenericWarningMacro(<< "SelectFeaturePoints: the mask has " << mask->GetNumberOfTuples()
+                           << " tuples of " << mask->GetNumberOfComponents() << " values for "
+                           << n << " points, not one value per point: nothing selected.");
+    mask = nullptr;
+  }
+  const vtkSmartPointer<vtkPointData> data = PointArraysOfLength(full->GetPointData(), n);
   vtkIdType nf = 0;
   for (vtkIdType i = 0; mask && i < n; ++i)
   {
@@ -1138,21 +1209,21 @@ void vtkFeaturePointDetector::SelectFeaturePoints(
   original->SetName("vtkOriginalPointIds");
   original->SetNumberOfValues(nf);
   vtkPointData* outPD = output->GetPointData();
-  outPD->CopyAllocate(full->GetPointData(), nf);
+  outPD->CopyAllocate(data, nf);
   vtkIdType j = 0;
   for (vtkIdType i = 0; mask && i < n; ++i)
   {
     if (mask->GetValue(i))
     {
       kept->SetPoint(j, points->GetPoint(i));
-      outPD->CopyData(full->GetPointData(), i, j);
+      outPD->CopyData(data, i, j);
       original->SetValue(j, i);
       ++j;
     }
   }
   outPD->SetNumberOfTuples(nf);
   outPD->AddArray(original);
-  if (vtkDataArray* scalars = full->GetPointData()->GetScalars())
+  if (vtkDataArray* scalars = data->GetScalars())
   {
     outPD->SetActiveScalars(scalars->GetName());
   }

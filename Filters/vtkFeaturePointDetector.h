@@ -126,11 +126,17 @@ public:
   /**
    * Wall-clock time of each stage of the last run, in order ("locator", "spacing",
    * "voxel filter", "neighbours", "scores", "threshold", "output"; a method reports the stages it
-   * has), in seconds.
+   * has), in seconds. An index outside 0 .. GetNumberOfStages() - 1 gives nullptr and 0.
    */
   int GetNumberOfStages() const { return static_cast<int>(this->StageNames.size()); }
-  const char* GetStageName(int i) const { return this->StageNames.at(i).c_str(); }
-  double GetStageTime(int i) const { return this->StageTimes.at(i); }
+  const char* GetStageName(int i) const
+  {
+    return i >= 0 && i < this->GetNumberOfStages() ? this->StageNames[i].c_str() : nullptr;
+  }
+  double GetStageTime(int i) const
+  {
+    return i >= 0 && i < static_cast<int>(this->StageTimes.size()) ? this->StageTimes[i] : 0.0;
+  }
   ///@}
 
   /**

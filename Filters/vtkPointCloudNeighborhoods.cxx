@@ -26,7 +26,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <numeric>
+#include <stdexcept>
 
 vtkStandardNewMacro(vtkPointCloudNeighborhoods);
 
@@ -528,10 +530,20 @@ bool vtkPointCloudNeighborhoods::FindNearestNeighbors(int k, const std::vector<v
   double progressStart, double progressEnd)
 {
   const vtkIdType rows = static_cast<vtkIdType>(ids.size());
-  table.resize(static_cast<size_t>(rows) * std::max(k, 0));
-  if (nearestDistances)
+  try
   {
-    nearestDistances->resize(rows);
+    table.resize(static_cast<size_t>(rows) * std::max(k, 0));
+    if (nearestDistances)
+    {
+      nearestDistances->resize(rows);
+    }
+  }
+  catch (const std::exception&) // std::bad_alloc, std::length_error
+  {
+    vtkErrorMacro(<< "FindNearestNeighbors: not enough memory for a table of " << rows
+                  << " rows of " << k << " neighbours.");
+    table.clear();
+    return false;
   }
   if (k <= 0 || rows == 0 || !this->Searchable)
   {
@@ -603,7 +615,19 @@ bool vtkPointCloudNeighborhoods::MakeVertexCells(vtkIdType n, vtkCellArray* cell
   {
     return false;
   }
-  vtkSmartPointer<vtkCellArray> verts = MakeVertexCells(n);
+  vtkSmartPointer<vtkCellArray> verts;
+  try
+  {
+    verts = MakeVertexCells(n);
+  }
+  catch (const std::bad_alloc&)
+  {
+    verts = nullptr; // not enough memory: false, as documented
+  }
+  catch (const std::length_error&)
+  {
+    verts = nullptr;
+  }
   if (!verts)
   {
     cells->Initialize();
@@ -654,6 +678,27 @@ double vtkPointCloudNeighborhoods::ComputeMeanSpacing(vtkIdList* ids, vtkIntArra
   }
   const int32_t* first = table->GetPointer(0);
   const std::vector<int32_t> entries(first, first + rows.size() * static_cast<size_t>(k));
+  // Ids and entries must name points of the cloud (entries may be -1: no neighbour).
+  const vtkIdType n = this->GetNumberOfPoints();
+  for (size_t r = 0; r < rows.size(); ++r)
+  {
+    if (rows[r] < 0 || rows[r] >= n)
+    {
+      vtkErrorMacro(<< "ComputeMeanSpacing: id " << rows[r] << " (entry " << r
+                    << " of the ids) is not a point of the cloud (0 to " << n - 1 << ")");
+      return 0.0;
+    }
+  }
+  for (size_t e = 0; e < entries.size(); ++e)
+  {
+    if (entries[e] < -1 || entries[e] >= n)
+    {
+      vtkErrorMacro(<< "ComputeMeanSpacing: table entry " << entries[e] << " (row " << e / k
+                    << ", column " << e % k << ") is not a point of the cloud (0 to " << n - 1
+                    << ", or -1)");
+      return 0.0;
+    }
+  }
   return this->ComputeMeanSpacing(rows, entries, k);
 }
 

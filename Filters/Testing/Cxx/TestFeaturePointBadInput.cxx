@@ -1,9 +1,16 @@
 // Bad input gets a warning or an error naming the problem, and a well-defined output: no crash, no
 // hang, no huge allocation, no NaN or infinity in any output array.
 #include "FeaturePointsTestRun.h"
+#include "vtkCellArray.h"
 #include "vtkCreaseVotingFeatures.h"
+#include "vtkFeatureCurveExtraction.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIntArray.h"
+#include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointData.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <chrono>
 #include <cmath>
@@ -423,6 +430,134 @@ int TestFeaturePointBadInput(int, char*[])
           observer->GetWarningMessage().find("distinct positions") != std::string::npos,
         "every point twice (shift %g s): no warning about the copies", shift);
     }
+  }
+  // Misshapen arrays and arguments through the API (found by fuzzing the Python wrapping): each
+  // crashed or read past an array's end.
+  {
+    Cloud c = BentPlanes(3000, 64, 90.0);
+    for (vtkIdType tuples : { 0, 3 })
+    {
+      // A point array shorter than the cloud, with OutputFeaturesOnly: left out with a warning
+      // (it was copied by the feature points' ids: a crash with 0 tuples, garbage with 3).
+      vtkNew<vtkPolyData> data;
+      data->DeepCopy(c.Data);
+      vtkNew<vtkFloatArray> extra;
+      extra->SetName("Extra");
+      extra->SetNumberOfTuples(tuples);
+      extra->Fill(2.0);
+      data->GetPointData()->AddArray(extra);
+      vtkNew<vtkCreaseVotingFeatures> detector;
+      vtkNew<vtkTest::ErrorObserver> observer;
+      detector->AddObserver(vtkCommand::WarningEvent, observer);
+      detector->OutputFeaturesOnlyOn();
+      detector->SetInputData(data);
+      detector->Update();
+      vtkPolyData* out = detector->GetOutput();
+      std::printf("%-22s %lld tuples: %lld feature points, 'Extra' %s\n", "a short point array",
+        static_cast<long long>(tuples), static_cast<long long>(out->GetNumberOfPoints()),
+        out->GetPointData()->GetArray("Extra") ? "kept" : "left out");
+      FP_CHECK(out->GetNumberOfPoints() > 100 && !out->GetPointData()->GetArray("Extra") &&
+          AllFinite(out),
+        "a point array of %lld tuples: %lld feature points, or the array was kept",
+        static_cast<long long>(tuples), static_cast<long long>(out->GetNumberOfPoints()));
+      FP_CHECK(observer->GetWarning() &&
+          observer->GetWarningMessage().find("'Extra' has") != std::string::npos,
+        "a point array of %lld tuples: no warning", static_cast<long long>(tuples));
+    }
+
+    // SelectFeaturePoints with a mask shorter than the cloud, or no cloud: nothing selected.
+    vtkNew<vtkUnsignedCharArray> shortMask;
+    shortMask->SetNumberOfValues(5);
+    shortMask->Fill(1);
+    vtkNew<vtkPolyData> selected;
+    vtkFeaturePointDetector::SelectFeaturePoints(c.Data, shortMask, selected);
+    FP_CHECK(selected->GetNumberOfPoints() == 0, "a 5-value mask selected %lld points",
+      static_cast<long long>(selected->GetNumberOfPoints()));
+    vtkFeaturePointDetector::SelectFeaturePoints(nullptr, shortMask, selected);
+    vtkFeaturePointDetector::SelectFeaturePoints(c.Data, shortMask, nullptr);
+
+    // Stages of a filter that never ran.
+    vtkNew<vtkCreaseVotingFeatures> idle;
+    FP_CHECK(idle->GetStageName(0) == nullptr && idle->GetStageName(-1) == nullptr &&
+        idle->GetStageTime(3) == 0.0,
+      "the stages of a filter that never ran");
+
+    // The curves over a detector's output whose arrays are misshapen: the optional ones are left
+    // aside with a warning, a FeatureMask of two components is refused with one error.
+    vtkNew<vtkCreaseVotingFeatures> detector;
+    detector->SetInputData(c.Data);
+    detector->Update();
+    auto curvesOf = [&](const char* name, int components, vtkIdType tuples, std::string& text) {
+      vtkNew<vtkPolyData> data;
+      data->DeepCopy(detector->GetOutput());
+      vtkNew<vtkFloatArray> bad;
+      bad->SetName(name);
+      bad->SetNumberOfComponents(components);
+      bad->SetNumberOfTuples(tuples);
+      bad->Fill(1.0);
+      data->GetPointData()->RemoveArray(name);
+      data->GetPointData()->AddArray(bad);
+      if (std::string(name) == "CreaseVotes")
+      {
+        data->GetPointData()->SetActiveScalars(name); // the detector's score
+      }
+      vtkNew<vtkFeatureCurveExtraction> curves;
+      vtkNew<vtkTest::ErrorObserver> observer;
+      curves->AddObserver(vtkCommand::WarningEvent, observer);
+      curves->AddObserver(vtkCommand::ErrorEvent, observer);
+      curves->SetInputData(data);
+      curves->Update();
+      text = observer->GetError() ? observer->GetErrorMessage()
+                                  : (observer->GetWarning() ? observer->GetWarningMessage() : "");
+      return curves->GetNumberOfCurves();
+    };
+    std::string text;
+    for (const char* name : { "Normals", "FeatureType", "CreaseAngle", "CreaseVotes" })
+    {
+      const vtkIdType found = curvesOf(name, std::string(name) == "Normals" ? 3 : 1, 0, text);
+      std::printf("%-22s '%s' of 0 tuples: %lld curves\n", "curves, misshapen", name,
+        static_cast<long long>(found));
+      FP_CHECK(found > 0 && text.find("not used") != std::string::npos,
+        "curves with '%s' of 0 tuples: %lld curves, message: %s", name,
+        static_cast<long long>(found), text.c_str());
+    }
+    const vtkIdType none = curvesOf("FeatureMask", 2, c.Data->GetNumberOfPoints(), text);
+    FP_CHECK(none == 0 && text.find("FeatureMask has") != std::string::npos,
+      "curves with a FeatureMask of 2 components: %lld curves, message: %s",
+      static_cast<long long>(none), text.c_str());
+
+    // Neighbourhoods: a table entry that names no point; a vertex table beyond memory.
+    vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+    neighborhoods->Build(c.Data->GetPoints());
+    vtkNew<vtkTest::ErrorObserver> observer;
+    neighborhoods->AddObserver(vtkCommand::ErrorEvent, observer);
+    vtkNew<vtkIdList> ids;
+    ids->InsertNextId(0);
+    vtkNew<vtkIntArray> table;
+    table->SetNumberOfComponents(2);
+    table->InsertNextTuple2(1999999, 1);
+    FP_CHECK(neighborhoods->ComputeMeanSpacing(ids, table) == 0.0 && observer->GetError() &&
+        observer->GetErrorMessage().find("1999999") != std::string::npos,
+      "a neighbour table naming point 1999999 of %lld", static_cast<long long>(
+                                                            c.Data->GetNumberOfPoints()));
+    vtkNew<vtkCellArray> cells;
+    FP_CHECK(!vtkPointCloudNeighborhoods::MakeVertexCells(vtkIdType(1) << 40, cells),
+      "2^40 vertex cells were made");
+  }
+  // Distinct points 1e200 apart, given to the filter directly (the command-line tool scales them):
+  // their squared distances overflow, which looked like coincident points.
+  {
+    Cloud c = BentPlanes(3000, 65, 90.0);
+    vtkNew<vtkPoints> far;
+    far->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < c.Data->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      c.Data->GetPoint(i, x);
+      far->InsertNextPoint(x[0] * 1e200, x[1] * 1e200, x[2] * 1e200);
+    }
+    const Outcome o = Run(far);
+    expect("coordinates near 1e200", o, "squares of distances underflow or overflow", 0);
   }
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
