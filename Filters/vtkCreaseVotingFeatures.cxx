@@ -4143,6 +4143,14 @@ int vtkCreaseVotingFeatures::DetectOnSites(vtkPointSet* input, vtkPolyData* outp
   return assembled;
 }
 
+void vtkCreaseVotingFeatures::ListParameters(std::vector<std::pair<const char*, double>>& parameters) const
+{
+  this->Superclass::ListParameters(parameters);
+  parameters.emplace_back("BandWidth", this->BandWidth);
+  parameters.emplace_back("MinimumAngle", this->MinimumAngle);
+  parameters.emplace_back("GrowThreshold", this->GrowThreshold);
+}
+
 void vtkCreaseVotingFeatures::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -330,6 +330,7 @@ public:
   const char* GetScoreArrayName() const override { return "CreaseVotes"; }
 
 protected:
+  void ListParameters(std::vector<std::pair<const char*, double>>& parameters) const override;
   vtkCreaseVotingFeatures();
   ~vtkCreaseVotingFeatures() override;
 

@@ -125,6 +125,14 @@ int vtkCurvatureDensityFeatures::RequestData(
   return finish();
 }
 
+void vtkCurvatureDensityFeatures::ListParameters(std::vector<std::pair<const char*, double>>& parameters) const
+{
+  this->Superclass::ListParameters(parameters);
+  parameters.emplace_back("CurvatureWeight", this->CurvatureWeight);
+  parameters.emplace_back("NormalAngleWeight", this->NormalAngleWeight);
+  parameters.emplace_back("DensityWeight", this->DensityWeight);
+}
+
 void vtkCurvatureDensityFeatures::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

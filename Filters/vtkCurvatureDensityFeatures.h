@@ -72,6 +72,7 @@ public:
   }
 
 protected:
+  void ListParameters(std::vector<std::pair<const char*, double>>& parameters) const override;
   // The upper median of `values` over `ids` (the own points of every process).
   double MedianOf(const float* values, const std::vector<vtkIdType>& ids);
   vtkCurvatureDensityFeatures();

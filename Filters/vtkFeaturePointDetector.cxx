@@ -370,9 +370,28 @@ double vtkFeaturePointDetector::AutomaticThreshold(std::vector<double>& scores, 
   return threshold;
 }
 
+void vtkFeaturePointDetector::ListParameters(
+  std::vector<std::pair<const char*, double>>& parameters) const
+{
+  parameters.emplace_back("Threshold", this->Threshold);
+  parameters.emplace_back("ThresholdSigmas", this->ThresholdSigmas);
+  parameters.emplace_back("HaloWidth", this->HaloWidth);
+}
+
 bool vtkFeaturePointDetector::PrepareNeighborhoods(
   vtkPoints* points, vtkIdType n, int k, vtkPointCloudNeighborhoods* neighborhoods)
 {
+  std::vector<std::pair<const char*, double>> parameters;
+  this->ListParameters(parameters);
+  for (const auto& parameter : parameters)
+  {
+    if (std::isnan(parameter.second))
+    {
+      vtkErrorMacro(<< parameter.first << " is NaN: give it a number. All scores are 0 and no "
+                                          "point is a feature point.");
+      return false;
+    }
+  }
   if (n == 0 || !points)
   {
     vtkWarningMacro("The input has no points: the output is empty.");

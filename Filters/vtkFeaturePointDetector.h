@@ -220,6 +220,13 @@ public:
     const std::vector<double>& scores, const std::vector<int>& weights, double sigmas);
 
 protected:
+  /**
+   * The numeric parameters a run reads, by name: PrepareNeighborhoods() refuses a run where one
+   * is NaN (vtkSetClampMacro lets NaN through), with an error naming it. Each class adds its own
+   * to its superclass's.
+   */
+  virtual void ListParameters(std::vector<std::pair<const char*, double>>& parameters) const;
+
   vtkFeaturePointDetector();
   ~vtkFeaturePointDetector() override;
 

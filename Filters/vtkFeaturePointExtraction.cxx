@@ -560,6 +560,15 @@ int vtkFeaturePointExtraction::SampleBackground(vtkPoints* points, const unsigne
   return std::max(1, static_cast<int>(std::lround(static_cast<double>(others) / sampled)));
 }
 
+void vtkFeaturePointExtraction::ListParameters(std::vector<std::pair<const char*, double>>& parameters) const
+{
+  this->Superclass::ListParameters(parameters);
+  parameters.emplace_back("Alpha", this->Alpha);
+  parameters.emplace_back("GaussianRadiusFactor", this->GaussianRadiusFactor);
+  parameters.emplace_back("VoxelSizeFactor", this->VoxelSizeFactor);
+  parameters.emplace_back("DensityContrast", this->DensityContrast);
+}
+
 void vtkFeaturePointExtraction::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -208,6 +208,7 @@ public:
   double GetHaloWidthFor(double spacing) const override;
 
 protected:
+  void ListParameters(std::vector<std::pair<const char*, double>>& parameters) const override;
   vtkFeaturePointExtraction();
   ~vtkFeaturePointExtraction() override;
 

@@ -29,6 +29,7 @@
 #include <new>
 #include <numeric>
 #include <stdexcept>
+#include <unistd.h>
 
 vtkStandardNewMacro(vtkPointCloudNeighborhoods);
 
@@ -616,6 +617,18 @@ bool vtkPointCloudNeighborhoods::MakeVertexCells(vtkIdType n, vtkCellArray* cell
     return false;
   }
   vtkSmartPointer<vtkCellArray> verts;
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+  // Beyond the machine's memory (two 64-bit arrays of n + 1 values): false without trying, since
+  // a failed allocation inside VTK's arrays is reported differently by each VTK version (an
+  // error, an exception, or an abort).
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+  if (pages > 0 && pageSize > 0 &&
+    static_cast<double>(n + 1) * 16.0 > static_cast<double>(pages) * static_cast<double>(pageSize))
+  {
+    cells->Initialize();
+    return false;
+  }
+#endif
   try
   {
     verts = MakeVertexCells(n);

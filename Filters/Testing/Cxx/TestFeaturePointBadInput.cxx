@@ -544,6 +544,32 @@ int TestFeaturePointBadInput(int, char*[])
     FP_CHECK(!vtkPointCloudNeighborhoods::MakeVertexCells(vtkIdType(1) << 40, cells),
       "2^40 vertex cells were made");
   }
+  // NaN given to a setter passes vtkSetClampMacro: the run is refused with an error naming it
+  // (the scores were NaN before).
+  {
+    Cloud c = BentPlanes(3000, 66, 90.0);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    vtkNew<vtkFeaturePointExtraction> paper;
+    paper->SetAlpha(nan);
+    vtkNew<vtkCreaseVotingFeatures> crease;
+    crease->SetMinimumAngle(nan);
+    vtkFeaturePointDetector* filters[2] = { paper, crease };
+    const char* names[2] = { "Alpha is NaN", "MinimumAngle is NaN" };
+    for (int f = 0; f < 2; ++f)
+    {
+      vtkNew<vtkTest::ErrorObserver> observer;
+      filters[f]->AddObserver(vtkCommand::ErrorEvent, observer);
+      filters[f]->SetInputData(c.Data);
+      filters[f]->Update();
+      vtkPolyData* out = filters[f]->GetOutput();
+      std::printf("%-22s %s: %lld points out, %ld feature points\n", "a NaN parameter", names[f],
+        static_cast<long long>(out->GetNumberOfPoints()), CountSet(Mask(out)));
+      FP_CHECK(observer->GetError() &&
+          observer->GetErrorMessage().find(names[f]) != std::string::npos && AllFinite(out) &&
+          CountSet(Mask(out)) == 0,
+        "a NaN parameter (%s): no error, or a non-finite output", names[f]);
+    }
+  }
   // Distinct points 1e200 apart, given to the filter directly (the command-line tool scales them):
   // their squared distances overflow, which looked like coincident points.
   {
