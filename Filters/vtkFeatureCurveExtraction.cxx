@@ -49,6 +49,9 @@ constexpr int MinFitPoints = 4;       // fewer trace points in a fit: nothing to
 // The fit radius grows where trace points are sparse (AdaptFitRadius), up to this many times
 // FitRadius: about 8 times sparser than a one-point-wide mask on a random sampling.
 constexpr double MaximumFitRadiusGrowth = 4.0;
+// A fit reads at most this many times the points of a disk of FitRadius at the mean spacing, the
+// nearest (a dense cluster of feature points would otherwise put thousands in every fit).
+constexpr double FitCapDisks = 4.0;
 // A curve more than this many resampling steps long per vertex keeps its vertices (Resample).
 constexpr double MaximumStepsPerVertex = 1024.0;
 constexpr double CollisionRadius = 1.5; // s: a trace joins a vertex of another this close
@@ -112,6 +115,7 @@ public:
   void Build(const std::vector<V3>& points)
   {
     this->Count = static_cast<vtkIdType>(points.size());
+    this->Source = &points;
     vtkNew<vtkPoints> p;
     p->SetDataTypeToDouble();
     p->SetNumberOfPoints(this->Count);
@@ -156,6 +160,47 @@ public:
     out.assign(this->Ids->begin(), this->Ids->end());
     std::sort(out.begin(), out.end()); // the same sums whatever the locator's order
   }
+  // The points within r of x, but at most `most` of them, the nearest (as Open3D's hybrid
+  // search): where points crowd far beyond a surface's sampling (a dense cluster), a ball would
+  // hold thousands and every query and fit through it would read them all.
+  void NearestWithin(const V3& x, double r, vtkIdType most, std::vector<vtkIdType>& out) const
+  {
+    out.clear();
+    if (this->Count == 0 || most <= 0)
+    {
+      return;
+    }
+    if (this->Locator == this->Grid)
+    {
+      // Crowded bins: the most nearest, of which those within r (all of the ball if it holds
+      // fewer).
+      this->Locator->FindClosestNPoints(static_cast<int>(std::min(most, this->Count)), x.data(), this->Ids);
+      const double r2 = r * r;
+      for (vtkIdType j = 0; j < this->Ids->GetNumberOfIds(); ++j)
+      {
+        const vtkIdType id = this->Ids->GetId(j);
+        if (((*this->Source)[id] - x).squaredNorm() <= r2)
+        {
+          out.push_back(id);
+        }
+      }
+    }
+    else
+    {
+      this->Locator->FindPointsWithinRadius(r, x.data(), this->Ids);
+      out.assign(this->Ids->begin(), this->Ids->end());
+      if (static_cast<vtkIdType>(out.size()) > most)
+      {
+        const std::vector<V3>& p = *this->Source;
+        std::nth_element(out.begin(), out.begin() + most, out.end(), [&](vtkIdType a, vtkIdType b) {
+          const double da = (p[a] - x).squaredNorm(), db = (p[b] - x).squaredNorm();
+          return da < db || (da == db && a < b);
+        });
+        out.resize(static_cast<size_t>(most));
+      }
+    }
+    std::sort(out.begin(), out.end()); // the same sums whatever the locator's order
+  }
   vtkIdType Nearest(const V3& x) const
   {
     return this->Count ? this->Locator->FindClosestPoint(x.data()) : -1;
@@ -178,6 +223,7 @@ public:
 
 private:
   vtkIdType Count = 0;
+  const std::vector<V3>* Source = nullptr; // the built points
   vtkNew<vtkPolyData> Data;
   vtkNew<vtkStaticPointLocator> Bins;
   vtkNew<vtkPointCloudGridLocator> Grid;
@@ -423,6 +469,7 @@ public:
   PointSearch AllSearch, TraceSearch;
 
 private:
+  vtkIdType FitCap() const; // the most points a fit reads
   LineFit FitAt(const V3& x, std::vector<vtkIdType>& ids) const;
   void TraceFrom(vtkIdType seed, int trace);
   void Walk(int start, V3 x, V3 d, int trace, int sign);
@@ -638,9 +685,17 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
   this->Covered.assign(this->TracePoints.size(), 0);
 }
 
+vtkIdType CurveRun::FitCap() const
+{
+  // Four times the points of a whole disk of radius R sampled at the mean spacing: a band, a
+  // corner's neighbourhood and a denser patch of a surface stay far below it.
+  const double disk = 3.14159265358979323846 * (this->R / this->S) * (this->R / this->S);
+  return static_cast<vtkIdType>(std::min(std::ceil(FitCapDisks * disk), 1e6));
+}
+
 LineFit CurveRun::FitAt(const V3& x, std::vector<vtkIdType>& ids) const
 {
-  this->TraceSearch.Within(x, this->R, ids);
+  this->TraceSearch.NearestWithin(x, this->R, this->FitCap(), ids);
   return FitLine(this->TracePoints, ids, x);
 }
 
@@ -1504,7 +1559,7 @@ bool CurveRun::NormalsCrease(const V3& x, V3& c) const
 {
   // Around a crease the normals lie in the plane across it: the direction in which they vary
   // least is the crease's.
-  this->AllSearch.Within(x, this->R, this->Scratch);
+  this->AllSearch.NearestWithin(x, this->R, this->FitCap(), this->Scratch);
   Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
   int count = 0;
   for (vtkIdType i : this->Scratch)

@@ -22,7 +22,8 @@
  *    crease points within 2 s: the ridges of the score. From the most line-like of them not yet
  *    covered, corners (FeatureType 3) aside, a trace steps StepLength s at a time along the
  *    line fitted (PCA) to the trace points within FitRadius s (1.5 FitRadius where that fit
- *    fails), each new vertex projected across
+ *    fails; at most the nearest 4 pi FitRadius^2 of them, four disks' worth at the mean spacing,
+ *    where a dense cluster crowds the ball), each new vertex projected across
  *    onto that line: the vertices follow the middle of the band of feature points, not the noisy
  *    points themselves. A trace stops where no trace point lies ahead (an end), where the fit turns
  *    by more than 35 degrees in a step or stops being line-like (a corner, a junction), or where it

@@ -874,6 +874,36 @@ void CoincidentPoints()
   ::unlink(Path("two-stacks-lines.vtp").c_str());
 }
 
+void DenseCluster()
+{
+  // A plane of 40,000 points and a cluster of 30,000 a few spacings wide on it: the detector
+  // types most of the cluster's points as features, and every fit of the curves around it read
+  // all of them (40 s in the curve stage; a cluster of 27,000 in a 200,000-point cloud: 156 s).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g(0.0, 0.006);
+  std::ostringstream text;
+  for (int i = 0; i < 40000; ++i)
+  {
+    text << u(rng) << " " << u(rng) << " 0\n";
+  }
+  for (int i = 0; i < 30000; ++i)
+  {
+    text << 0.5 + g(rng) << " " << 0.5 + g(rng) << " " << g(rng) << "\n";
+  }
+  Spit(Path("cluster.xyz"), text.str());
+  const Run run = ExpectSuccess("the curves around a dense cluster",
+    { Path("cluster.xyz"), Path("cluster.vtp"), "--lines", Path("cluster-lines.vtp") }, 25.0);
+  Check(run.Out.find("curves      ") != std::string::npos,
+    "the curves around a dense cluster: no curve summary: " + run.Out);
+  Check(!HasNonFinite(Path("cluster.vtp")) && !HasNonFinite(Path("cluster-lines.vtp")),
+    "the curves around a dense cluster: NaN or Inf in the output");
+  for (const char* name : { "cluster.xyz", "cluster.vtp", "cluster-lines.vtp" })
+  {
+    ::unlink(Path(name).c_str());
+  }
+}
+
 void WideFiles()
 {
   // Before: none finished in 60 s (10,000 columns: 4.7 s).
@@ -1376,6 +1406,7 @@ int main(int argc, char* argv[])
   XMLPointsArrays();
   FarOutliers();
   ScatteredFeatureCurves();
+  DenseCluster();
   WideFiles();
   LegacyFiles();
   ExtremeScales();
