@@ -2910,6 +2910,13 @@ int vtkFeatureCurveExtraction::RequestData(
   {
     return 0;
   }
+  if (const char* nan = featurepoints::FirstNaN({ { "FitRadius", this->FitRadius },
+        { "StepLength", this->StepLength }, { "JoinDistance", this->JoinDistance },
+        { "MinimumLength", this->MinimumLength } }))
+  {
+    vtkErrorMacro(<< nan << " is NaN: give it a number. No curve is extracted.");
+    return 0;
+  }
   vtkDataArray* mask = input->GetPointData()->GetArray("FeatureMask");
   if (!mask && input->GetNumberOfPoints() > 0)
   {

@@ -1,5 +1,6 @@
 #include "vtkFeatureModelSource.h"
 #include "vtkFeaturePointsRandom.h"
+#include "vtkFeaturePointsStatistics.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -825,6 +826,22 @@ int vtkFeatureModelSource::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (!output)
   {
+    return 0;
+  }
+  if (const char* nan = featurepoints::FirstNaN({ { "FeatureDensityFactor",
+                                                    this->FeatureDensityFactor },
+        { "DenseBandWidth", this->DenseBandWidth }, { "NoiseFactor", this->NoiseFactor },
+        { "Size", this->Size }, { "ValleySlope", this->ValleySlope },
+        { "FeatureSeparation", this->FeatureSeparation } }))
+  {
+    vtkErrorMacro(<< nan << " is NaN: give it a number. The output is empty.");
+    return 0;
+  }
+  if (!std::isfinite(this->Center[0]) || !std::isfinite(this->Center[1]) ||
+    !std::isfinite(this->Center[2]))
+  {
+    vtkErrorMacro(<< "Center (" << this->Center[0] << ", " << this->Center[1] << ", "
+                  << this->Center[2] << ") is not finite: give it numbers. The output is empty.");
     return 0;
   }
   const vtkIdType n =

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 namespace featurepoints
@@ -18,6 +20,22 @@ namespace featurepoints
  * distribution (1 / Phi^-1(3/4)): s = MADToSigma * MAD.
  */
 constexpr double MADToSigma = 1.4826;
+
+/**
+ * The name of the first of these parameters whose value is NaN (VTK's clamping setters let NaN
+ * through), or nullptr when each is a number.
+ */
+inline const char* FirstNaN(std::initializer_list<std::pair<const char*, double>> parameters)
+{
+  for (const auto& parameter : parameters)
+  {
+    if (std::isnan(parameter.second))
+    {
+      return parameter.first;
+    }
+  }
+  return nullptr;
+}
 
 /**
  * The value of rank `rank` (0-based) of `values`, which are reordered (std::nth_element). The

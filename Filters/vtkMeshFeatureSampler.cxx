@@ -1,5 +1,6 @@
 #include "vtkMeshFeatureSampler.h"
 #include "vtkFeaturePointsRandom.h"
+#include "vtkFeaturePointsStatistics.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -208,6 +209,12 @@ int vtkMeshFeatureSampler::RequestData(
   }
   output->Initialize();
   edgesOutput->Initialize();
+  if (const char* nan = featurepoints::FirstNaN(
+        { { "NoiseSigma", this->NoiseSigma }, { "FeatureAngle", this->FeatureAngle } }))
+  {
+    vtkErrorMacro(<< nan << " is NaN: give it a number. The output is empty.");
+    return 1;
+  }
   const vtkIdType inputPoints = input->GetNumberOfPoints();
   if (inputPoints == 0 || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {

@@ -150,6 +150,12 @@ void vtkPointCloudNeighborhoods::SetSearchMethod(int method)
   {
     this->SetLocator(vtkSmartPointer<vtkPointCloudGridLocator>::New());
   }
+  else if (method != GRID)
+  {
+    vtkErrorMacro(<< "SearchMethod " << method << " is neither GRID (" << GRID
+                  << ") nor STATIC_POINT_LOCATOR (" << STATIC_POINT_LOCATOR
+                  << "); give SetLocator() any other locator. The locator is unchanged.");
+  }
 }
 
 int vtkPointCloudNeighborhoods::GetSearchMethod() const

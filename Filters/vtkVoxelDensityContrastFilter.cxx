@@ -1,4 +1,5 @@
 #include "vtkVoxelDensityContrastFilter.h"
+#include "vtkFeaturePointsStatistics.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -78,6 +79,14 @@ int vtkVoxelDensityContrastFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (!input || !output)
   {
+    return 0;
+  }
+  if (const char* nan = featurepoints::FirstNaN({ { "VoxelSizeFactor", this->VoxelSizeFactor },
+        { "Spacing", this->Spacing }, { "DensityContrast", this->DensityContrast },
+        { "ContrastSigmas", this->ContrastSigmas },
+        { "MinimumContrastFraction", this->MinimumContrastFraction } }))
+  {
+    vtkErrorMacro(<< nan << " is NaN: give it a number. No point is marked a candidate.");
     return 0;
   }
   const vtkIdType n = input->GetNumberOfPoints();

@@ -2,15 +2,19 @@
 // hang, no huge allocation, no NaN or infinity in any output array.
 #include "FeaturePointsTestRun.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkFeatureCurveExtraction.h"
+#include "vtkFeatureModelSource.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
+#include "vtkMeshFeatureSampler.h"
 #include "vtkPointCloudNeighborhoods.h"
 #include "vtkPointData.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVoxelDensityContrastFilter.h"
 
 #include <chrono>
 #include <cmath>
@@ -569,6 +573,106 @@ int TestFeaturePointBadInput(int, char*[])
           CountSet(Mask(out)) == 0,
         "a NaN parameter (%s): no error, or a non-finite output", names[f]);
     }
+  }
+  // The same in the other filters: the curves, the model source, the mesh sampler and the voxel
+  // screen put NaN in their points or arrays before.
+  {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    // Every coordinate and every floating-point value of point and cell data finite.
+    auto finite = [](vtkPolyData* out) {
+      for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      {
+        double x[3];
+        out->GetPoint(i, x);
+        if (!std::isfinite(x[0] + x[1] + x[2]))
+        {
+          return false;
+        }
+      }
+      for (vtkFieldData* fd : { static_cast<vtkFieldData*>(out->GetPointData()),
+             static_cast<vtkFieldData*>(out->GetCellData()) })
+      {
+        for (int a = 0; a < fd->GetNumberOfArrays(); ++a)
+        {
+          vtkDataArray* array = vtkDataArray::SafeDownCast(fd->GetAbstractArray(a));
+          for (vtkIdType i = 0; array && i < array->GetNumberOfValues(); ++i)
+          {
+            if (!std::isfinite(array->GetVariantValue(i).ToDouble()))
+            {
+              return false;
+            }
+          }
+        }
+      }
+      return true;
+    };
+    auto refused = [&](const char* what, vtkAlgorithm* filter, const char* name,
+                     std::initializer_list<vtkPolyData*> outputs) {
+      vtkNew<vtkTest::ErrorObserver> observer;
+      filter->AddObserver(vtkCommand::ErrorEvent, observer);
+      filter->Update();
+      bool clean = true;
+      for (vtkPolyData* out : outputs)
+      {
+        clean = clean && finite(out);
+      }
+      std::printf("%-22s %s: %s\n", "a NaN parameter", what,
+        observer->GetError() ? observer->GetErrorMessage().c_str() : "no error");
+      FP_CHECK(observer->GetError() &&
+          observer->GetErrorMessage().find(name) != std::string::npos && clean,
+        "a NaN parameter (%s): no error naming %s, or a non-finite output", what, name);
+    };
+    vtkNew<vtkCreaseVotingFeatures> crease;
+    crease->SetInputData(BentPlanes(3000, 67, 90.0).Data);
+    vtkNew<vtkFeatureCurveExtraction> curves;
+    curves->SetInputConnection(crease->GetOutputPort());
+    curves->SetStepLength(nan);
+    refused("curves", curves, "StepLength is NaN", { curves->GetOutput(0), curves->GetOutput(1) });
+
+    vtkNew<vtkFeatureModelSource> model;
+    model->SetNumberOfPoints(2000);
+    model->SetNoiseFactor(nan);
+    refused("model source", model, "NoiseFactor is NaN", { model->GetOutput() });
+    vtkNew<vtkFeatureModelSource> moved;
+    moved->SetNumberOfPoints(2000);
+    moved->SetCenter(0.0, std::numeric_limits<double>::infinity(), 0.0);
+    refused("model source", moved, "Center", { moved->GetOutput() });
+
+    vtkNew<vtkPoints> corners; // a tetrahedron's surface
+    corners->InsertNextPoint(0, 0, 0);
+    corners->InsertNextPoint(1, 0, 0);
+    corners->InsertNextPoint(0, 1, 0);
+    corners->InsertNextPoint(0, 0, 1);
+    vtkNew<vtkCellArray> faces;
+    const vtkIdType tri[4][3] = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } };
+    for (const auto& t : tri)
+    {
+      faces->InsertNextCell(3, t);
+    }
+    vtkNew<vtkPolyData> mesh;
+    mesh->SetPoints(corners);
+    mesh->SetPolys(faces);
+    vtkNew<vtkMeshFeatureSampler> sampler;
+    sampler->SetInputData(mesh);
+    sampler->SetNoiseSigma(nan);
+    refused("mesh sampler", sampler, "NoiseSigma is NaN",
+      { sampler->GetOutput(0), sampler->GetOutput(1) });
+
+    vtkNew<vtkVoxelDensityContrastFilter> voxels;
+    voxels->SetInputData(BentPlanes(3000, 68, 90.0).Data);
+    voxels->SetContrastSigmas(nan);
+    refused("voxel screen", voxels, "ContrastSigmas is NaN", { voxels->GetOutput() });
+  }
+  // An unknown search method was ignored without a word.
+  {
+    vtkNew<vtkPointCloudNeighborhoods> neighborhoods;
+    vtkNew<vtkTest::ErrorObserver> observer;
+    neighborhoods->AddObserver(vtkCommand::ErrorEvent, observer);
+    neighborhoods->SetSearchMethod(7);
+    FP_CHECK(observer->GetError() &&
+        observer->GetErrorMessage().find("SearchMethod 7") != std::string::npos &&
+        neighborhoods->GetSearchMethod() == vtkPointCloudNeighborhoods::GRID,
+      "SetSearchMethod(7): no error, or the locator changed");
   }
   // Distinct points 1e200 apart, given to the filter directly (the command-line tool scales them):
   // their squared distances overflow, which looked like coincident points.
