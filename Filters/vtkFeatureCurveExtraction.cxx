@@ -469,7 +469,7 @@ public:
   PointSearch AllSearch, TraceSearch;
 
 private:
-  vtkIdType FitCap() const; // the most points a fit reads
+  vtkIdType FitCap(double radius) const; // the most points a fit within radius reads
   LineFit FitAt(const V3& x, std::vector<vtkIdType>& ids) const;
   void TraceFrom(vtkIdType seed, int trace);
   void Walk(int start, V3 x, V3 d, int trace, int sign);
@@ -685,17 +685,17 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
   this->Covered.assign(this->TracePoints.size(), 0);
 }
 
-vtkIdType CurveRun::FitCap() const
+vtkIdType CurveRun::FitCap(double radius) const
 {
-  // Four times the points of a whole disk of radius R sampled at the mean spacing: a band, a
+  // Four times the points of a whole disk of this radius sampled at the mean spacing: a band, a
   // corner's neighbourhood and a denser patch of a surface stay far below it.
-  const double disk = 3.14159265358979323846 * (this->R / this->S) * (this->R / this->S);
-  return static_cast<vtkIdType>(std::min(std::ceil(FitCapDisks * disk), 1e6));
+  const double disk = 3.14159265358979323846 * (radius / this->S) * (radius / this->S);
+  return static_cast<vtkIdType>(std::min(std::ceil(FitCapDisks * disk), 1e7));
 }
 
 LineFit CurveRun::FitAt(const V3& x, std::vector<vtkIdType>& ids) const
 {
-  this->TraceSearch.NearestWithin(x, this->R, this->FitCap(), ids);
+  this->TraceSearch.NearestWithin(x, this->R, this->FitCap(this->R), ids);
   return FitLine(this->TracePoints, ids, x);
 }
 
@@ -1559,7 +1559,7 @@ bool CurveRun::NormalsCrease(const V3& x, V3& c) const
 {
   // Around a crease the normals lie in the plane across it: the direction in which they vary
   // least is the crease's.
-  this->AllSearch.NearestWithin(x, this->R, this->FitCap(), this->Scratch);
+  this->AllSearch.NearestWithin(x, this->R, this->FitCap(this->R), this->Scratch);
   Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
   int count = 0;
   for (vtkIdType i : this->Scratch)
@@ -2507,7 +2507,7 @@ V3 CurveRun::FitAlong(const std::vector<V3>& c, const std::vector<double>& arc, 
   const double last = closed ? VTK_DOUBLE_MAX : arc[n - 1] - arc[k] + 0.5 * this->H;
   const double across = SectionRadius * this->R;
   std::vector<vtkIdType> ids;
-  this->AllSearch.Within(r0, across + halfLength, ids);
+  this->AllSearch.NearestWithin(r0, across + halfLength, this->FitCap(across + halfLength), ids);
   std::vector<Eigen::Vector2d> q, nq;
   for (vtkIdType i : ids)
   {
