@@ -2914,8 +2914,10 @@ int vtkFeatureCurveExtraction::RequestData(
         { "StepLength", this->StepLength }, { "JoinDistance", this->JoinDistance },
         { "MinimumLength", this->MinimumLength } }))
   {
-    vtkErrorMacro(<< nan << " is NaN: give it a number. No curve is extracted.");
-    return 0;
+    vtkErrorMacro(<< nan << " is NaN: give it a number. The outputs are empty.");
+    output->Initialize();
+    curvesOutput->Initialize();
+    return 1;
   }
   vtkDataArray* mask = input->GetPointData()->GetArray("FeatureMask");
   if (!mask && input->GetNumberOfPoints() > 0)

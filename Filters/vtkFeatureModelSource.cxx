@@ -835,14 +835,16 @@ int vtkFeatureModelSource::RequestData(
         { "FeatureSeparation", this->FeatureSeparation } }))
   {
     vtkErrorMacro(<< nan << " is NaN: give it a number. The output is empty.");
-    return 0;
+    output->Initialize();
+    return 1;
   }
   if (!std::isfinite(this->Center[0]) || !std::isfinite(this->Center[1]) ||
     !std::isfinite(this->Center[2]))
   {
     vtkErrorMacro(<< "Center (" << this->Center[0] << ", " << this->Center[1] << ", "
                   << this->Center[2] << ") is not finite: give it numbers. The output is empty.");
-    return 0;
+    output->Initialize();
+    return 1;
   }
   const vtkIdType n =
     this->NumberOfPoints > 0 ? this->NumberOfPoints : GetDefaultNumberOfPoints(this->Model);

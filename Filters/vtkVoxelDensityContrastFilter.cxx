@@ -86,8 +86,9 @@ int vtkVoxelDensityContrastFilter::RequestData(
         { "ContrastSigmas", this->ContrastSigmas },
         { "MinimumContrastFraction", this->MinimumContrastFraction } }))
   {
-    vtkErrorMacro(<< nan << " is NaN: give it a number. No point is marked a candidate.");
-    return 0;
+    vtkErrorMacro(<< nan << " is NaN: give it a number. The output is empty.");
+    output->Initialize();
+    return 1;
   }
   const vtkIdType n = input->GetNumberOfPoints();
   vtkNew<vtkUnsignedCharArray> candidate;
