@@ -726,26 +726,10 @@ bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods*
 {
   if (!(d > 0.0))
   {
-    // Distinct points whose spacing squares to 0 or overflows (coordinates near 1e-160 or
-    // 1e160) look coincident: say why.
-    double bounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
-    if (neighborhoods && neighborhoods->GetPoints())
-    {
-      neighborhoods->GetPoints()->GetBounds(bounds);
-    }
-    const double extent =
-      std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-    if (extent > 0.0 && (!(extent * extent > 0.0) || !std::isfinite(d) || extent > 1e150))
-    {
-      vtkWarningMacro(<< "The cloud spans " << extent
-                      << " units, where squares of distances underflow or overflow in double "
-                         "precision: scale its coordinates by a power of two that brings the "
-                         "extent near 1 (the featurepoints command does so itself). All scores "
-                         "are 0 and no point is a feature point.");
-      return false;
-    }
-    vtkWarningMacro("All points coincide: the point spacing is 0, all scores are 0 and no point "
-                    "is a feature point.");
+    // Distinct points whose spacing squares to 0 or overflows look coincident: say why.
+    const std::string why = neighborhoods ? neighborhoods->DescribeZeroSpacing(d)
+                                          : std::string("All points coincide: the point spacing is 0");
+    vtkWarningMacro(<< why << ". All scores are 0 and no point is a feature point.");
     return false;
   }
   this->MeanSpacing = d;

@@ -28,6 +28,7 @@
 #include <limits>
 #include <new>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -183,6 +184,27 @@ void vtkPointCloudNeighborhoods::ReleaseLocator()
 vtkPoints* vtkPointCloudNeighborhoods::GetPoints() const
 {
   return this->Points;
+}
+
+std::string vtkPointCloudNeighborhoods::DescribeZeroSpacing(double spacing) const
+{
+  double bounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  if (this->Points)
+  {
+    this->Points->GetBounds(bounds);
+  }
+  const double extent =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  if (extent > 0.0 && (!(extent * extent > 0.0) || !std::isfinite(spacing) || extent > 1e150))
+  {
+    std::ostringstream text;
+    text << "The cloud spans " << extent
+         << " units, where squares of distances underflow or overflow in double precision: "
+            "scale its coordinates by a power of two that brings the extent near 1 (the "
+            "featurepoints command does so itself)";
+    return text.str();
+  }
+  return "All points coincide: the point spacing is 0";
 }
 
 bool vtkPointCloudNeighborhoods::Build(vtkPoints* points)

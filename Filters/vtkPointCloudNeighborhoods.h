@@ -213,6 +213,13 @@ public:
   /** Why Build() failed. */
   const std::string& GetErrorText() const { return this->ErrorText; }
 
+  /**
+   * Why a mean spacing came out 0 or not finite (no final period): distinct points whose squared
+   * distances underflow or overflow in double precision (coordinates near 1e-160 or 1e160), or
+   * else "All points coincide".
+   */
+  std::string DescribeZeroSpacing(double spacing) const;
+
   /** The points given to Build(), or their renumbered copy after ReorderSpatially(). */
   vtkPoints* GetPoints() const;
 

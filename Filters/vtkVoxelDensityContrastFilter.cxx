@@ -16,6 +16,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <cmath>
 
 vtkStandardNewMacro(vtkVoxelDensityContrastFilter);
 
@@ -117,7 +118,7 @@ int vtkVoxelDensityContrastFilter::RequestData(
       }
       const double mean = neighborhoods->ComputeMeanSpacing();
       const double d = this->Spacing > 0.0 ? this->Spacing : mean;
-      if (d > 0.0)
+      if (d > 0.0 && std::isfinite(d))
       {
         this->MarkCandidates(input->GetPoints(), neighborhoods->GetValidMask(), d,
           neighborhoods->GetNearestDistances().data(), candidate->GetPointer(0),
@@ -125,7 +126,8 @@ int vtkVoxelDensityContrastFilter::RequestData(
       }
       else
       {
-        vtkWarningMacro("All points coincide: the point spacing is 0 and no voxel grid can be built.");
+        vtkWarningMacro(<< neighborhoods->DescribeZeroSpacing(d)
+                        << ". No voxel grid can be built and no point is a candidate.");
       }
     }
   }

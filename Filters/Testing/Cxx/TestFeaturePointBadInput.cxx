@@ -688,6 +688,21 @@ int TestFeaturePointBadInput(int, char*[])
     }
     const Outcome o = Run(far);
     expect("coordinates near 1e200", o, "squares of distances underflow or overflow", 0);
+    // The voxel screen said "All points coincide" there.
+    vtkNew<vtkPolyData> farCloud;
+    farCloud->SetPoints(far);
+    vtkNew<vtkVoxelDensityContrastFilter> voxels;
+    vtkNew<vtkTest::ErrorObserver> observer;
+    voxels->AddObserver(vtkCommand::WarningEvent, observer);
+    voxels->SetInputData(farCloud);
+    voxels->Update();
+    std::printf("%-22s voxel screen: %s\n", "coordinates near 1e200",
+      observer->GetWarning() ? observer->GetWarningMessage().c_str() : "no warning");
+    FP_CHECK(observer->GetWarning() &&
+        observer->GetWarningMessage().find("squares of distances underflow or overflow") !=
+          std::string::npos &&
+        voxels->GetOutput()->GetNumberOfPoints() == far->GetNumberOfPoints(),
+      "coordinates near 1e200: the voxel screen does not say why it builds no grid");
   }
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
