@@ -383,14 +383,11 @@ bool vtkFeaturePointDetector::PrepareNeighborhoods(
 {
   std::vector<std::pair<const char*, double>> parameters;
   this->ListParameters(parameters);
-  for (const auto& parameter : parameters)
+  if (const char* nan = featurepoints::FirstNaN(parameters.begin(), parameters.end()))
   {
-    if (std::isnan(parameter.second))
-    {
-      vtkErrorMacro(<< parameter.first << " is NaN: give it a number. All scores are 0 and no "
-                                          "point is a feature point.");
-      return false;
-    }
+    vtkErrorMacro(<< nan << " is NaN: give it a number. All scores are 0 and no point is a "
+                            "feature point.");
+    return false;
   }
   if (n == 0 || !points)
   {

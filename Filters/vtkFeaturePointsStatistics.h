@@ -22,19 +22,25 @@ namespace featurepoints
 constexpr double MADToSigma = 1.4826;
 
 /**
- * The name of the first of these parameters whose value is NaN (VTK's clamping setters let NaN
- * through), or nullptr when each is a number.
+ * The name of the first of these (name, value) parameters whose value is NaN (VTK's clamping
+ * setters let NaN through), or nullptr when each is a number.
  */
-inline const char* FirstNaN(std::initializer_list<std::pair<const char*, double>> parameters)
+template <typename Iterator>
+const char* FirstNaN(Iterator first, Iterator last)
 {
-  for (const auto& parameter : parameters)
+  for (; first != last; ++first)
   {
-    if (std::isnan(parameter.second))
+    if (std::isnan(first->second))
     {
-      return parameter.first;
+      return first->first;
     }
   }
   return nullptr;
+}
+
+inline const char* FirstNaN(std::initializer_list<std::pair<const char*, double>> parameters)
+{
+  return FirstNaN(parameters.begin(), parameters.end());
 }
 
 /**
