@@ -38,6 +38,12 @@ namespace
 {
 // sigma is never taken below this fraction of the mean spacing (noise-free clouds).
 constexpr double NoiseFloor = 0.05;
+// Outliers (see RemoveOutliers): a point off the plane of its nearest by more than this many
+// standard errors. Student's t with 12 degrees of freedom (15 neighbours, less the plane's 3)
+// exceeds 12 with a probability of about 5e-8.
+constexpr double OutlierDistance = 12.0;
+constexpr int OutlierNeighbors = 8; // fewer nearest: no plane to measure against
+constexpr int MaxOutlierRuns = 3;   // runs on the kept points, the first included
 // A neighbourhood is two sheets (the sides of a wall thinner than it) where the two-means split
 // of its heights along its plane's normal (SplitHeights) puts the groups' means more than
 // SheetSplitSigmas times their pooled RMS apart (the best split of 16 heights of pure Gaussian
@@ -3699,6 +3705,8 @@ int vtkCreaseVotingFeatures::RequestData(
   }
   this->ResetFigures();
   this->OnSites = false;
+  this->OutlierRuns = 0;
+  this->NumberOfOutliers = 0;
   return this->Detect(input, output);
 }
 
@@ -3706,6 +3714,7 @@ int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
 {
   this->NoiseSigma = 0.0;
   this->GrowThresholdUsed = this->GrowThreshold;
+  this->Scored.clear();
   const vtkIdType n = input->GetNumberOfPoints();
   vtkPoints* points = input->GetPoints();
   auto normals = featurepoints::NewZeroArray<vtkFloatArray>("Normals", 3, n);
@@ -3762,6 +3771,23 @@ int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
       return this->DetectOnSites(input, output, site, sites, tolerance);
     }
     this->WarnAboutCloud(neighborhoods);
+  }
+  if (this->RemoveOutliers && this->OutlierRuns < MaxOutlierRuns - 1)
+  {
+    std::vector<vtkIdType> site;
+    std::vector<unsigned char> state;
+    const vtkIdType kept = this->FindOutliers(neighborhoods, ids, kNear,
+      [&table](vtkIdType r, int32_t* buffer, int w) { return table.Row(r, buffer, w); }, site,
+      state);
+    if (kept > 0)
+    {
+      table = NeighborTable();
+      std::vector<vtkIdType>().swap(ids);
+      ++this->OutlierRuns;
+      const int ok = this->DetectOnSubset(input, output, site, kept, &state);
+      --this->OutlierRuns;
+      return ok;
+    }
   }
   const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
   CreaseRun run(reader, ids, table, k, kNear, this->NumberOfNeighbors, this->MeanSpacing, n);
@@ -4055,35 +4081,47 @@ int vtkCreaseVotingFeatures::DetectOnSites(vtkPointSet* input, vtkPolyData* outp
   const std::vector<vtkIdType>& site, vtkIdType sites, double tolerance)
 {
   const vtkIdType n = input->GetNumberOfPoints();
+  vtkIdType valid = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    valid += site[i] >= 0;
+  }
+  vtkWarningMacro(<< valid - sites << " of " << valid << " points lie within " << tolerance
+                  << " (1 % of the median distance to a point's 8th nearest) of another point: "
+                     "the detector scores the "
+                  << sites << " distinct positions, and each point takes its position's results.");
+  return this->DetectOnSubset(input, output, site, sites);
+}
+
+int vtkCreaseVotingFeatures::DetectOnSubset(vtkPointSet* input, vtkPolyData* output,
+  const std::vector<vtkIdType>& site, vtkIdType sites, const std::vector<unsigned char>* state)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
   vtkPoints* points = input->GetPoints();
-  // Each position at its first point's coordinates.
+  // Each site at its first point's coordinates.
   vtkNew<vtkPoints> positions;
   positions->SetDataType(points->GetDataType());
   positions->SetNumberOfPoints(sites);
-  vtkIdType valid = 0, placed = 0;
+  vtkIdType placed = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
     if (site[i] >= 0)
     {
-      ++valid;
       if (site[i] == placed)
       {
         positions->SetPoint(placed++, points->GetPoint(i));
       }
     }
   }
-  vtkWarningMacro(<< valid - sites << " of " << valid << " points lie within " << tolerance
-                  << " (1 % of the median distance to a point's 8th nearest) of another point: "
-                     "the detector scores the "
-                  << sites << " distinct positions, and each point takes its position's results.");
   vtkNew<vtkPolyData> distinct;
   distinct->SetPoints(positions);
   vtkNew<vtkPolyData> scored;
   const bool featuresOnly = this->OutputFeaturesOnly;
   this->OutputFeaturesOnly = false;
+  const bool onSites = this->OnSites;
   this->OnSites = true;
   const int ok = this->Detect(distinct, scored);
-  this->OnSites = false;
+  this->OnSites = onSites;
   this->OutputFeaturesOnly = featuresOnly;
   if (!ok)
   {
@@ -4126,7 +4164,20 @@ int vtkCreaseVotingFeatures::DetectOnSites(vtkPointSet* input, vtkPolyData* outp
   {
     return 0;
   }
-  this->NumberOfCandidates = valid;
+  // Which input points were scored: a site's state (the inner run's, or scored where it kept
+  // every site), outliers and invalid points as the caller says.
+  std::vector<unsigned char> inner;
+  inner.swap(this->Scored);
+  this->Scored.assign(static_cast<size_t>(n), UNSCORED);
+  vtkIdType counts[3] = { 0, 0, 0 };
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    this->Scored[i] = site[i] >= 0 ? (inner.empty() ? SCORED : inner[site[i]])
+                                   : (state ? (*state)[i] : UNSCORED);
+    ++counts[this->Scored[i]];
+  }
+  this->NumberOfCandidates = counts[SCORED];
+  this->NumberOfOutliers = counts[OUTLIER];
   this->NumberOfFeaturePoints = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -4141,6 +4192,148 @@ int vtkCreaseVotingFeatures::DetectOnSites(vtkPointSet* input, vtkPolyData* outp
   const int assembled = this->AssembleOutput(input, output, raw, mask);
   this->MergeRepeatedStages();
   return assembled;
+}
+
+vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neighborhoods,
+  const std::vector<vtkIdType>& ids, int width,
+  const std::function<const int32_t*(vtkIdType, int32_t*, int)>& row,
+  std::vector<vtkIdType>& site, std::vector<unsigned char>& state)
+{
+  site.clear();
+  state.clear();
+  const vtkIdType rows = static_cast<vtkIdType>(ids.size());
+  const int kn = std::min(width, this->NormalNeighbors);
+  if (this->IsDistributed() || kn < OutlierNeighbors || !(this->MeanSpacing > 0.0))
+  {
+    return 0;
+  }
+  const featurepoints::PointReader reader(neighborhoods->GetPoints());
+  const double floor = NoiseFloor * this->MeanSpacing;
+  std::vector<unsigned char> outlier(static_cast<size_t>(rows), 0);
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<int32_t> buffer(static_cast<size_t>(width)), around(static_cast<size_t>(width));
+    std::vector<double> q(3 * (static_cast<size_t>(width) + 1));
+    // Whether point `id` lies off the plane of the points `others` (without `id` itself) by
+    // more than OutlierDistance times their RMS distance from it.
+    auto offPlane = [&](vtkIdType id, const int32_t* others, int width2) {
+      int count = 0;
+      double x[3], y[3];
+      reader.Get(id, x);
+      // Each position once (copies kept would weigh the plane as many points), the point's own
+      // left out.
+      for (int j = 0; j < width2 && others[j] >= 0; ++j)
+      {
+        if (others[j] == id)
+        {
+          continue;
+        }
+        reader.Get(others[j], y);
+        const double v[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
+        bool seen = v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0;
+        for (int i = 0; i < count && !seen; ++i)
+        {
+          seen = q[3 * i] == v[0] && q[3 * i + 1] == v[1] && q[3 * i + 2] == v[2];
+        }
+        if (!seen)
+        {
+          std::copy(v, v + 3, &q[3 * count]);
+          ++count;
+        }
+      }
+      if (count < OutlierNeighbors)
+      {
+        return false;
+      }
+      // The plane through the others' mean, by its eigenvectors (ascending).
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int j = 0; j < count; ++j)
+      {
+        mean += Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+      }
+      mean /= count;
+      Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+      for (int j = 0; j < count; ++j)
+      {
+        const Eigen::Vector3d v = Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]) - mean;
+        scatter += v * v.transpose();
+      }
+      if (!scatter.allFinite())
+      {
+        return false;
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+      solver.computeDirect(scatter / count);
+      const Eigen::Vector3d lambda = solver.eigenvalues().cwiseMax(0.0);
+      if (!(lambda[1] > 0.0))
+      {
+        return false; // the others on a line or at one position: no plane
+      }
+      // The point (the origin) from the others' mean, in the plane's frame.
+      const Eigen::Vector3d u = solver.eigenvectors().transpose() * (-mean);
+      // Their RMS distance from the plane, its 3 parameters taken from the degrees of freedom;
+      // the height's standard error adds the plane's own (a regression's prediction interval):
+      // its offset and its tilts, the farther the point lies along each direction in it.
+      const double rms = std::max(std::sqrt(lambda[0] * count / (count - 3)), floor);
+      const double spread = 1.0 + 1.0 / count + u[1] * u[1] / (count * lambda[1]) +
+        u[2] * u[2] / (count * lambda[2]);
+      return std::abs(u[0]) > OutlierDistance * rms * std::sqrt(spread);
+    };
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      // The plane of the point's nearest; failing that (they straddle a crease: a stray point
+      // above a face near an edge has the edge's points among its nearest), the plane of its
+      // nearest point's nearest.
+      const int32_t* neighbors = row(r, buffer.data(), kn);
+      if (offPlane(ids[r], neighbors, kn))
+      {
+        outlier[r] = 1;
+        continue;
+      }
+      const auto nearest = neighbors[0] >= 0
+        ? std::lower_bound(ids.begin(), ids.end(), static_cast<vtkIdType>(neighbors[0]))
+        : ids.end();
+      if (nearest != ids.end() && *nearest == neighbors[0])
+      {
+        // The nearest point's own nearest, one more to make up for the point among them.
+        const int wide = std::min(kn + 1, width);
+        outlier[r] = offPlane(ids[r], row(nearest - ids.begin(), around.data(), wide), wide);
+      }
+    }
+  });
+  const vtkIdType found = std::count(outlier.begin(), outlier.end(), 1);
+  if (found == 0)
+  {
+    return 0;
+  }
+  // Input ids: the method's numbering is the renumbered cloud's (OriginalIds) when renumbered.
+  const vtkIdType n = neighborhoods->GetNumberOfPoints();
+  const bool renumbered = static_cast<vtkIdType>(this->OriginalIds.size()) == n;
+  std::vector<unsigned char> kept(static_cast<size_t>(n), 0);
+  for (vtkIdType r = 0; r < rows; ++r)
+  {
+    if (!outlier[r])
+    {
+      kept[renumbered ? this->OriginalIds[ids[r]] : ids[r]] = 1;
+    }
+  }
+  site.assign(static_cast<size_t>(n), -1);
+  state.assign(static_cast<size_t>(n), UNSCORED);
+  for (vtkIdType r = 0; r < rows; ++r)
+  {
+    if (outlier[r])
+    {
+      state[renumbered ? this->OriginalIds[ids[r]] : ids[r]] = OUTLIER;
+    }
+  }
+  vtkIdType sites = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (kept[i])
+    {
+      site[i] = sites++;
+    }
+  }
+  return sites;
 }
 
 void vtkCreaseVotingFeatures::ListParameters(std::vector<std::pair<const char*, double>>& parameters) const

@@ -8,6 +8,10 @@
  * whose answer does not depend on the cloud's size, units, noise or sampling:
  * "does the neighbourhood of this point agree that a crease passes through it?"
  *
+ * First the outliers (RemoveOutliers): a point that lies off the plane of its NormalNeighbors
+ * nearest, or off that of its nearest point's, by more than 12 standard errors is left out of
+ * everything below (see RemoveOutliers).
+ *
  * For each point P_i and its k = NumberOfNeighbors nearest other points (with P_i itself, N = k + 1
  * points):
  *
@@ -263,6 +267,30 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Outliers left out. Default on. A point is an outlier (a spike of a scan, a stray point above
+   * a face) where it lies off the least-squares plane of its NormalNeighbors nearest (each
+   * position once), or failing that off the plane of its nearest point's nearest (a stray point
+   * above a face near an edge has the edge among its own nearest), by more than 12 standard
+   * errors: the standard error is their RMS distance from the plane (at least 0.05 mean
+   * spacings), widened as a regression's prediction interval is for a point away from their
+   * centroid. Under Gaussian noise, Student's t with the 12 degrees of freedom of 15 points less
+   * the plane's 3 exceeds 12 once in 20 million. Points beside a crease or a corner are not
+   * outliers: their nearest do not lie on one plane, so the error is large. An outlier gets 0 in
+   * every output array (a zero normal, FeatureMask 0, FeatureType 0) and the detector runs on
+   * the other points; where that run finds outliers among them (outliers close together hide
+   * each other), it runs again on what is left, at most 3 runs in all. Distributed runs keep
+   * every point (as with this off).
+   */
+  vtkSetMacro(RemoveOutliers, bool);
+  vtkGetMacro(RemoveOutliers, bool);
+  vtkBooleanMacro(RemoveOutliers, bool);
+  ///@}
+
+  /** The outliers the last run left out (see RemoveOutliers). */
+  vtkGetMacro(NumberOfOutliers, vtkIdType);
+
+  ///@{
   /** k of the PCA normals that seed the two-plane split. Default 15. */
   vtkSetClampMacro(NormalNeighbors, int, 3, 1000);
   vtkGetMacro(NormalNeighbors, int);
@@ -350,6 +378,35 @@ protected:
     vtkIdType sites, double tolerance);
   bool OnSites = false;
 
+  /**
+   * The outliers (see RemoveOutliers) among the rows `ids` of the k-nearest table `row` (as
+   * FindSites() reads it). Where there are any, fills `site` (input point id -> index among the
+   * kept points, in input order; -1 for an outlier or an invalid point) and returns the number of
+   * points kept; otherwise returns 0 and leaves `site` empty.
+   */
+  vtkIdType FindOutliers(vtkPointCloudNeighborhoods* neighborhoods,
+    const std::vector<vtkIdType>& ids, int width,
+    const std::function<const int32_t*(vtkIdType, int32_t*, int)>& row,
+    std::vector<vtkIdType>& site, std::vector<unsigned char>& state);
+
+  /**
+   * The detector's steps on the `sites` points that `site` maps the input's points to (see
+   * DetectOnSites()), each input point then taking its site's results, 0 where it has none.
+   * `state` (by input point, optional) says which of the points without a site are outliers.
+   */
+  int DetectOnSubset(vtkPointSet* input, vtkPolyData* output, const std::vector<vtkIdType>& site,
+    vtkIdType sites, const std::vector<unsigned char>* state = nullptr);
+  int OutlierRuns = 0; // the runs on kept points that enclose the current one
+  vtkIdType NumberOfOutliers = 0;
+  // After Detect(): by input point, whether it was scored (empty: every valid point was).
+  enum ScoreState : unsigned char
+  {
+    UNSCORED = 0, // an invalid point
+    SCORED = 1,
+    OUTLIER = 2
+  };
+  std::vector<unsigned char> Scored;
+
   int NumberOfNeighbors = 150;
   int NormalNeighbors = 15;
   double BandWidth = 2.0;
@@ -360,6 +417,7 @@ protected:
   bool ThinFeatures = false;
   bool CreaseOffsets = false;
   bool MergeCopies = true;
+  bool RemoveOutliers = true;
   double NoiseSigma = 0.0;
   double GrowThresholdUsed = 0.0;
 

@@ -362,6 +362,12 @@ const std::vector<FilterOption>& FilterOptions()
       "distinct positions and each copy takes its position's results; mpiexec runs always keep "
       "them)",
       true },
+    { "keep-outliers", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
+      [](vtkFeaturePointDetector* f, double) { Crease(f)->RemoveOutliersOff(); },
+      [](vtkFeaturePointDetector* f) { return double(!Crease(f)->GetRemoveOutliers()); },
+      "score every point (without it, a point off the plane of its 15 nearest by more than 12 "
+      "times their RMS distance from it is an outlier: left out, 0 in every array)",
+      true },
     { "crease-offsets", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
       [](vtkFeaturePointDetector* f, double) { Crease(f)->CreaseOffsetsOn(); },
       [](vtkFeaturePointDetector* f) { return double(Crease(f)->GetCreaseOffsets()); },
@@ -2240,8 +2246,15 @@ private:
                                     "; unexplained details and borders join")
                                     .c_str());
     }
-    std::printf("candidates  %lld of %lld points scored\n",
-      static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n));
+    vtkCreaseVotingFeatures* crease = vtkCreaseVotingFeatures::SafeDownCast(filter);
+    const vtkIdType outliers = crease ? crease->GetNumberOfOutliers() : 0;
+    std::printf("candidates  %lld of %lld points scored%s\n",
+      static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n),
+      outliers > 0
+        ? (" (" + std::to_string(outliers) + (outliers == 1 ? " outlier" : " outliers") +
+            " left out: off the plane of their nearest)")
+            .c_str()
+        : "");
     std::printf("features    %lld (%.2f %%)\n", static_cast<long long>(features),
       100.0 * features / std::max<vtkIdType>(n, 1));
     const std::string types = this->TypeCounts();

@@ -3,12 +3,13 @@
 // past an acute edge, a seam of the sampling, the noise and the fits of a plate three spacings
 // thick, the noise of a part whose details lie a few spacings apart, the offsets onto the crease
 // lines, bit-identical output for any thread count and backend, and bad input (NaN coordinates,
-// too few points) without a crash or a NaN.
+// too few points) without a crash or a NaN, and outliers left out.
 // The held-out quality floors are in Benchmarks (FeaturePoints::QualityFloors).
 #include "FeaturePointsTestRun.h"
 #include "vtkCreaseVotingFeatures.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkMeshFeatureSampler.h"
 #include "vtkMinimalStandardRandomSequence.h"
@@ -43,6 +44,106 @@ vtkSmartPointer<vtkCreaseVotingFeatures> Run(vtkPolyData* data, bool borders = f
   filter->SetInputData(data);
   filter->Update();
   return filter;
+}
+// Outliers: the box (30,000 points, sigma = 0.25 s) with 300 stray points, each a face point
+// at least 6 s from every edge moved outward along its face's normal by 4 to 10 s. Left out by
+// default: no point of the box is, most stray points are (their nearest lie on the face below,
+// or their nearest point's do), and the stray points that stay no longer make the box's faces
+// look creased. Kept (RemoveOutliers off), they are features and their neighbours too.
+int Outliers()
+{
+  using namespace fptest;
+  int failures = 0;
+  vtkNew<vtkFeatureModelSource> source;
+  source->SetModelToBox();
+  source->SetNumberOfPoints(30000);
+  source->SetNoiseFactor(0.25);
+  source->Update();
+  vtkPolyData* box = source->GetOutput();
+  const double s = box->GetFieldData()->GetArray("CleanMeanSpacing")->GetTuple1(0);
+  vtkDataArray* distance = box->GetPointData()->GetArray("FeatureDistance");
+  const double half[3] = { 0.5 * source->GetSize(), 0.35 * source->GetSize(),
+    0.25 * source->GetSize() };
+  const double* center = source->GetCenter();
+  const vtkIdType n = box->GetNumberOfPoints();
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(box->GetPoints());
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(41);
+  int stray = 0;
+  for (vtkIdType i = 0; i < n && stray < 300; i += 37)
+  {
+    if (distance->GetTuple1(i) <= 6.0 * s)
+    {
+      continue;
+    }
+    double x[3];
+    box->GetPoint(i, x);
+    int axis = 0;
+    for (int c = 1; c < 3; ++c)
+    {
+      if (std::abs(x[c] - center[c]) / half[c] > std::abs(x[axis] - center[axis]) / half[axis])
+      {
+        axis = c;
+      }
+    }
+    random->Next();
+    x[axis] += (x[axis] > center[axis] ? 1.0 : -1.0) * (4.0 + 6.0 * random->GetValue()) * s;
+    points->InsertNextPoint(x);
+    ++stray;
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  struct Counts
+  {
+    long FalseOnBox = 0, LeftOutOfBox = 0, StrayMarked = 0, StrayLeftOut = 0;
+  };
+  auto run = [&](bool remove, vtkCreaseVotingFeatures* filter) {
+    filter->SetRemoveOutliers(remove);
+    filter->SetInputData(cloud);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    vtkUnsignedCharArray* mask = Mask(out);
+    vtkDataArray* normals = out->GetPointData()->GetArray("Normals");
+    Counts c;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double v[3];
+      normals->GetTuple(i, v);
+      const bool leftOut = v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0;
+      if (i < n)
+      {
+        c.FalseOnBox += mask->GetValue(i) && distance->GetTuple1(i) > 4.0 * s;
+        c.LeftOutOfBox += leftOut;
+      }
+      else
+      {
+        c.StrayMarked += mask->GetValue(i) != 0;
+        c.StrayLeftOut += leftOut;
+      }
+    }
+    FP_CHECK(AllFinite(out), "outliers: NaN or infinity in an output array");
+    return c;
+  };
+  vtkNew<vtkCreaseVotingFeatures> removed, kept;
+  const Counts r = run(true, removed);
+  const Counts k = run(false, kept);
+  std::printf("outliers: %d stray points; left out %ld of them and %ld of the box's %lld points, "
+              "%ld marked, %ld false feature points on the box (kept: %ld marked, %ld false)\n",
+    stray, r.StrayLeftOut, r.LeftOutOfBox, static_cast<long long>(n), r.StrayMarked, r.FalseOnBox,
+    k.StrayMarked, k.FalseOnBox);
+  FP_CHECK(stray == 300, "outliers: %d stray points made", stray);
+  FP_CHECK(r.LeftOutOfBox == 0, "outliers: %ld points of the box left out", r.LeftOutOfBox);
+  FP_CHECK(r.StrayLeftOut >= 250, "outliers: %ld of 300 stray points left out", r.StrayLeftOut);
+  FP_CHECK(removed->GetNumberOfOutliers() == r.StrayLeftOut &&
+      removed->GetNumberOfCandidates() == n + stray - r.StrayLeftOut,
+    "outliers: %lld outliers, %lld candidates", static_cast<long long>(removed->GetNumberOfOutliers()),
+    static_cast<long long>(removed->GetNumberOfCandidates()));
+  FP_CHECK(r.StrayMarked <= 20, "outliers: %ld stray points marked", r.StrayMarked);
+  FP_CHECK(r.FalseOnBox <= 30, "outliers: %ld false feature points on the box", r.FalseOnBox);
+  FP_CHECK(k.StrayLeftOut == 0 && kept->GetNumberOfOutliers() == 0,
+    "outliers kept: %ld left out", k.StrayLeftOut);
+  return failures;
 }
 } // namespace
 
@@ -586,5 +687,6 @@ int TestCreaseVotingFeatures(int, char*[])
       "10 points: %lld features", static_cast<long long>(filter->GetNumberOfFeaturePoints()));
     FP_CHECK(AllFinite(filter->GetOutput()), "10 points: NaN in an output array");
   }
+  failures += Outliers();
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -92,6 +92,7 @@ const std::vector<Property>& Properties()
     FP_PLAIN(vtkCreaseVotingFeatures, ThinFeatures),
     FP_PLAIN(vtkCreaseVotingFeatures, CreaseOffsets),
     FP_PLAIN(vtkCreaseVotingFeatures, MergeCopies),
+    FP_PLAIN(vtkCreaseVotingFeatures, RemoveOutliers),
     FP_PLAIN(vtkCreaseVotingFeatures, Borders),
     FP_PLAIN(vtkCreaseVotingFeatures, MultiScale),
     FP_CLAMPED(vtkFeaturePointExtraction, Alpha),
@@ -513,6 +514,10 @@ const std::map<std::string, Expected>& CLIOptions()
     { "keep-copies",
       { { "crease" }, [](vtkFeaturePointDetector* f) {
           return std::string(Crease(f)->GetMergeCopies() ? "off" : "on");
+        } } },
+    { "keep-outliers",
+      { { "crease" }, [](vtkFeaturePointDetector* f) {
+          return std::string(Crease(f)->GetRemoveOutliers() ? "off" : "on");
         } } },
     { "crease-offsets",
       { { "crease" }, [](vtkFeaturePointDetector* f) {
