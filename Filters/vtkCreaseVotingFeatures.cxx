@@ -3774,6 +3774,7 @@ int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
   }
   if (this->RemoveOutliers && this->OutlierRuns < MaxOutlierRuns - 1)
   {
+    this->BeginStage("outliers");
     std::vector<vtkIdType> site;
     std::vector<unsigned char> state;
     const vtkIdType kept = this->FindOutliers(neighborhoods, ids, kNear,
@@ -4213,8 +4214,8 @@ vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neig
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
     std::vector<int32_t> buffer(static_cast<size_t>(width)), around(static_cast<size_t>(width));
     std::vector<double> q(3 * (static_cast<size_t>(width) + 1));
-    // Whether point `id` lies off the plane of the points `others` (without `id` itself) by
-    // more than OutlierDistance times their RMS distance from it.
+    // How many standard errors point `id` lies off the plane of the points `others` (without
+    // `id` itself); -1 where they give no plane.
     auto offPlane = [&](vtkIdType id, const int32_t* others, int width2) {
       int count = 0;
       double x[3], y[3];
@@ -4242,7 +4243,7 @@ vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neig
       }
       if (count < OutlierNeighbors)
       {
-        return false;
+        return -1.0;
       }
       // The plane through the others' mean, by its eigenvectors (ascending).
       Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -4259,14 +4260,14 @@ vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neig
       }
       if (!scatter.allFinite())
       {
-        return false;
+        return -1.0;
       }
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
       solver.computeDirect(scatter / count);
       const Eigen::Vector3d lambda = solver.eigenvalues().cwiseMax(0.0);
       if (!(lambda[1] > 0.0))
       {
-        return false; // the others on a line or at one position: no plane
+        return -1.0; // the others on a line or at one position: no plane
       }
       // The point (the origin) from the others' mean, in the plane's frame.
       const Eigen::Vector3d u = solver.eigenvectors().transpose() * (-mean);
@@ -4276,28 +4277,32 @@ vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neig
       const double rms = std::max(std::sqrt(lambda[0] * count / (count - 3)), floor);
       const double spread = 1.0 + 1.0 / count + u[1] * u[1] / (count * lambda[1]) +
         u[2] * u[2] / (count * lambda[2]);
-      return std::abs(u[0]) > OutlierDistance * rms * std::sqrt(spread);
+      return std::abs(u[0]) / (rms * std::sqrt(spread));
     };
     for (vtkIdType r = begin; r < end; ++r)
     {
-      // The plane of the point's nearest; failing that (they straddle a crease: a stray point
-      // above a face near an edge has the edge's points among its nearest), the plane of its
-      // nearest point's nearest.
+      // The plane of the point's nearest.
+      const vtkIdType id = ids[r];
       const int32_t* neighbors = row(r, buffer.data(), kn);
-      if (offPlane(ids[r], neighbors, kn))
+      const double own = offPlane(id, neighbors, kn);
+      if (own > OutlierDistance)
       {
         outlier[r] = 1;
         continue;
       }
+      // Failing that (they may straddle a crease: a stray point above a face near an edge has
+      // the edge's points among its nearest, whose plane is no face's), the plane of its
+      // nearest point's nearest, one more of them to make up for the point among them.
       const auto nearest = neighbors[0] >= 0
         ? std::lower_bound(ids.begin(), ids.end(), static_cast<vtkIdType>(neighbors[0]))
         : ids.end();
-      if (nearest != ids.end() && *nearest == neighbors[0])
+      if (nearest == ids.end() || *nearest != neighbors[0])
       {
-        // The nearest point's own nearest, one more to make up for the point among them.
-        const int wide = std::min(kn + 1, width);
-        outlier[r] = offPlane(ids[r], row(nearest - ids.begin(), around.data(), wide), wide);
+        continue;
       }
+      const int wide = std::min(kn + 1, width);
+      const int32_t* theirs = row(nearest - ids.begin(), around.data(), wide);
+      outlier[r] = offPlane(id, theirs, wide) > OutlierDistance;
     }
   });
   const vtkIdType found = std::count(outlier.begin(), outlier.end(), 1);
