@@ -25,6 +25,7 @@
 #include <cstring>
 #include <deque>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <memory>
@@ -42,7 +43,26 @@ constexpr double NoiseFloor = 0.05;
 // standard errors. Student's t with 12 degrees of freedom (15 neighbours, less the plane's 3)
 // exceeds 12 with a probability of about 5e-8.
 constexpr double OutlierDistance = 12.0;
+// Over the plane of the nearest point's nearest, the standard error of a height is at least
+// this many mean spacings (over the point's own, at least the noise floor 0.05 d): the point
+// can lie just across a crease from all of them (on the clean box at 30,000 points, a point
+// 0.86 d below the top face's plane, beside the edge, lay 14.6 errors off it at 0.05 d). At a
+// quarter spacing, the point must lie 3 d off that plane. Its own nearest always hold its face.
+constexpr double OutlierFloor = 0.25;
+constexpr double OnPlane = 3.0; // within this many errors of its own nearest's plane: on it
 constexpr int OutlierNeighbors = 8; // fewer nearest: no plane to measure against
+// Isolated points: Tukey's far fence (3 interquartile ranges past the third quartile) on the
+// logarithm of each point's distance to its nearest other position.
+constexpr double IsolatedFence = 3.0;
+// The interquartile range is taken as at least a random sampling's: the nearest distance of a
+// uniform random (Poisson) sampling of a surface has quartiles 0.605 and 1.328 times its mean,
+// log(1.328 / 0.605) = 0.786. A grid's is 0, which would call every point a spacing and a
+// rounding away isolated; no sampling of a surface leaves its points more isolated than a
+// random one.
+constexpr double RandomSpread = 0.786;
+// Nearest points that are a surface: their RMS thickness across their plane is less than half
+// their RMS spread along it (a scatter through a volume spreads about as much every way).
+constexpr double SurfaceThickness = 0.5;
 constexpr int MaxOutlierRuns = 3;   // runs on the kept points, the first included
 // A neighbourhood is two sheets (the sides of a wall thinner than it) where the two-means split
 // of its heights along its plane's normal (SplitHeights) puts the groups' means more than
@@ -159,6 +179,27 @@ constexpr double CornerReachScales = 2.0;
 
 // Moments of a set of points: count, sum, sum of outer products (upper triangle). The points are
 // relative to the fitted point, a few spacings long, so the one-pass covariance loses nothing.
+// Tukey's far fence of the logarithms of the points' distances to their nearest other position
+// (`gap`, -1 for none): the third quartile plus IsolatedFence interquartile ranges, the range at
+// least RandomSpread. Infinite with fewer than 4 figures.
+double IsolationFence(const std::vector<float>& gap)
+{
+  std::vector<float> logs;
+  logs.reserve(gap.size());
+  std::copy_if(
+    gap.begin(), gap.end(), std::back_inserter(logs), [](float g) { return g != -1.0f; });
+  if (logs.size() < 4)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  auto quartile = [&logs](size_t at) {
+    std::nth_element(logs.begin(), logs.begin() + at, logs.end());
+    return static_cast<double>(logs[at]);
+  };
+  const double q1 = quartile(logs.size() / 4), q3 = quartile(3 * logs.size() / 4);
+  return q3 + IsolatedFence * std::max(q3 - q1, RandomSpread);
+}
+
 struct Moments
 {
   int Count = 0;
@@ -4209,14 +4250,41 @@ vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neig
     return 0;
   }
   const featurepoints::PointReader reader(neighborhoods->GetPoints());
-  const double floor = NoiseFloor * this->MeanSpacing;
+  const double noiseFloor = NoiseFloor * this->MeanSpacing;
+  const double acrossFloor = OutlierFloor * this->MeanSpacing;
+  // Isolated points: the logarithm of the distance to the nearest other position beyond Tukey's
+  // far fence of the cloud's (the third quartile plus 3 interquartile ranges, the range at
+  // least a random sampling's: 14 times the mean spacing on a random sampling, and as much
+  // wider as the cloud's density varies).
+  std::vector<float> gap(static_cast<size_t>(rows), -1.0f);
+  vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<int32_t> buffer(static_cast<size_t>(width));
+    double x[3], y[3];
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const int32_t* neighbors = row(r, buffer.data(), kn);
+      reader.Get(ids[r], x);
+      for (int j = 0; j < kn && neighbors[j] >= 0; ++j)
+      {
+        reader.Get(neighbors[j], y);
+        const double d2 = vtkMath::Distance2BetweenPoints(x, y);
+        if (d2 > 0.0)
+        {
+          gap[r] = static_cast<float>(0.5 * std::log(d2));
+          break;
+        }
+      }
+    }
+  });
+  const double fence = IsolationFence(gap);
   std::vector<unsigned char> outlier(static_cast<size_t>(rows), 0);
   vtkSMPTools::For(0, rows, [&](vtkIdType begin, vtkIdType end) {
     std::vector<int32_t> buffer(static_cast<size_t>(width)), around(static_cast<size_t>(width));
     std::vector<double> q(3 * (static_cast<size_t>(width) + 1));
     // How many standard errors point `id` lies off the plane of the points `others` (without
     // `id` itself); -1 where they give no plane.
-    auto offPlane = [&](vtkIdType id, const int32_t* others, int width2) {
+    auto offPlane = [&](vtkIdType id, const int32_t* others, int width2, double floor,
+                      bool* flat = nullptr) {
       int count = 0;
       double x[3], y[3];
       reader.Get(id, x);
@@ -4269,6 +4337,10 @@ vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neig
       {
         return -1.0; // the others on a line or at one position: no plane
       }
+      if (flat)
+      {
+        *flat = lambda[0] < SurfaceThickness * SurfaceThickness * lambda[1];
+      }
       // The point (the origin) from the others' mean, in the plane's frame.
       const Eigen::Vector3d u = solver.eigenvectors().transpose() * (-mean);
       // Their RMS distance from the plane, its 3 parameters taken from the degrees of freedom;
@@ -4284,12 +4356,14 @@ vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neig
       // The plane of the point's nearest.
       const vtkIdType id = ids[r];
       const int32_t* neighbors = row(r, buffer.data(), kn);
-      const double own = offPlane(id, neighbors, kn);
+      bool flat = false;
+      const double own = offPlane(id, neighbors, kn, noiseFloor, &flat);
       if (own > OutlierDistance)
       {
         outlier[r] = 1;
         continue;
       }
+      const bool isolated = gap[r] != -1.0f && gap[r] > fence;
       // Failing that (they may straddle a crease: a stray point above a face near an edge has
       // the edge's points among its nearest, whose plane is no face's), the plane of its
       // nearest point's nearest, one more of them to make up for the point among them.
@@ -4302,7 +4376,29 @@ vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neig
       }
       const int wide = std::min(kn + 1, width);
       const int32_t* theirs = row(nearest - ids.begin(), around.data(), wide);
-      outlier[r] = offPlane(id, theirs, wide) > OutlierDistance;
+      if (isolated)
+      {
+        // An isolated point that no surface holds: its nearest are no surface (a scatter of
+        // stray points), or it lies beyond the reach of its nearest point's nearest (no plane's
+        // extrapolation says anything that far out: a stray point far from a sheet).
+        double x[3], y[3], z[3];
+        reader.Get(id, x);
+        reader.Get(neighbors[0], y);
+        const int last = featurepoints::RowLength(theirs, wide) - 1;
+        bool beyond = false;
+        if (last >= 1)
+        {
+          reader.Get(theirs[last] == id ? theirs[last - 1] : theirs[last], z);
+          beyond = vtkMath::Distance2BetweenPoints(x, y) > vtkMath::Distance2BetweenPoints(y, z);
+        }
+        if (own < 0.0 || !flat || beyond)
+        {
+          outlier[r] = 1;
+          continue;
+        }
+      }
+      const double floor = own >= 0.0 && own <= OnPlane ? acrossFloor : noiseFloor;
+      outlier[r] = offPlane(id, theirs, wide, floor) > OutlierDistance;
     }
   });
   const vtkIdType found = std::count(outlier.begin(), outlier.end(), 1);

@@ -9,8 +9,8 @@
  * "does the neighbourhood of this point agree that a crease passes through it?"
  *
  * First the outliers (RemoveOutliers): a point that lies off the plane of its NormalNeighbors
- * nearest, or off that of its nearest point's, by more than 12 standard errors is left out of
- * everything below (see RemoveOutliers).
+ * nearest, or off that of its nearest point's, by more than 12 standard errors, or that is
+ * isolated and held by no surface, is left out of everything below (see RemoveOutliers).
  *
  * For each point P_i and its k = NumberOfNeighbors nearest other points (with P_i itself, N = k + 1
  * points):
@@ -269,18 +269,22 @@ public:
   ///@{
   /**
    * Outliers left out. Default on. A point is an outlier (a spike of a scan, a stray point above
-   * a face) where it lies off the least-squares plane of its NormalNeighbors nearest (each
-   * position once), or failing that off the plane of its nearest point's nearest (a stray point
-   * above a face near an edge has the edge among its own nearest), by more than 12 standard
-   * errors: the standard error is their RMS distance from the plane (at least 0.05 mean
-   * spacings), widened as a regression's prediction interval is for a point away from their
-   * centroid. Under Gaussian noise, Student's t with the 12 degrees of freedom of 15 points less
-   * the plane's 3 exceeds 12 once in 20 million. Points beside a crease or a corner are not
-   * outliers: their nearest do not lie on one plane, so the error is large. An outlier gets 0 in
-   * every output array (a zero normal, FeatureMask 0, FeatureType 0) and the detector runs on
-   * the other points; where that run finds outliers among them (outliers close together hide
-   * each other), it runs again on what is left, at most 3 runs in all. Distributed runs keep
-   * every point (as with this off).
+   * a face, returns from the air) where it lies off the least-squares plane of its
+   * NormalNeighbors nearest (each position once) by more than 12 standard errors; or off the
+   * plane of its nearest point's nearest by as much (a stray point above a face near an edge
+   * has the edge among its own nearest); or where it is isolated (its distance to the nearest
+   * other position beyond Tukey's far fence of the cloud's, in logarithms) and no surface holds
+   * it (its nearest are no surface, or it lies beyond its nearest point's nearest). The
+   * standard error is the others' RMS distance from their plane, at least 0.05 mean spacings
+   * (a quarter spacing over the nearest point's plane where the point lies on its own nearest's
+   * plane: it may lie just across a crease from them), widened as a regression's prediction
+   * interval is for a point away from their centroid. Under Gaussian noise, Student's t with
+   * the 12 degrees of freedom of 15 points less the plane's 3 exceeds 12 once in 20 million.
+   * Points beside a crease or a corner are not outliers: their nearest do not lie on one plane,
+   * so the error is large. An outlier gets 0 in every output array (a zero normal, FeatureMask
+   * 0, FeatureType 0) and the detector runs on the other points; where that run finds outliers
+   * among them (outliers close together hide each other), it runs again on what is left, at
+   * most 3 runs in all. Distributed runs keep every point (as with this off).
    */
   vtkSetMacro(RemoveOutliers, bool);
   vtkGetMacro(RemoveOutliers, bool);

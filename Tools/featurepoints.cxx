@@ -365,8 +365,9 @@ const std::vector<FilterOption>& FilterOptions()
     { "keep-outliers", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
       [](vtkFeaturePointDetector* f, double) { Crease(f)->RemoveOutliersOff(); },
       [](vtkFeaturePointDetector* f) { return double(!Crease(f)->GetRemoveOutliers()); },
-      "score every point (without it, a point off the plane of its 15 nearest by more than 12 "
-      "times their RMS distance from it is an outlier: left out, 0 in every array)",
+      "score every point (without it, a point more than 12 standard errors off the plane of "
+      "its 15 nearest or of its nearest point's, or isolated with no surface holding it, is an "
+      "outlier: left out, 0 in every array)",
       true },
     { "crease-offsets", "", { "crease" }, 0, 1, true, { { "off", 0 }, { "on", 1 } },
       [](vtkFeaturePointDetector* f, double) { Crease(f)->CreaseOffsetsOn(); },
@@ -2252,7 +2253,7 @@ private:
       static_cast<long long>(filter->GetNumberOfCandidates()), static_cast<long long>(n),
       outliers > 0
         ? (" (" + std::to_string(outliers) + (outliers == 1 ? " outlier" : " outliers") +
-            " left out: off the plane of their nearest)")
+            " left out: off their surface)")
             .c_str()
         : "");
     std::printf("features    %lld (%.2f %%)\n", static_cast<long long>(features),

@@ -143,6 +143,37 @@ int Outliers()
   FP_CHECK(r.FalseOnBox <= 30, "outliers: %ld false feature points on the box", r.FalseOnBox);
   FP_CHECK(k.StrayLeftOut == 0 && kept->GetNumberOfOutliers() == 0,
     "outliers kept: %ld left out", k.StrayLeftOut);
+
+  // A scatter: 600 points spread through a cube 20 times the box's size (each far from every
+  // other; a scan's returns from the air). Kept, nearly all of them were feature points, typed
+  // convex or concave. And the clean box (sigma = 0), whose points beside an edge can lie just
+  // across it from all of their nearest point's nearest: none is left out.
+  vtkNew<vtkPoints> scattered;
+  scattered->DeepCopy(box->GetPoints());
+  for (int i = 0; i < 600; ++i)
+  {
+    double x[3];
+    for (double& c : x)
+    {
+      random->Next();
+      c = (random->GetValue() - 0.5) * 20.0 * source->GetSize();
+    }
+    scattered->InsertNextPoint(x);
+  }
+  cloud->SetPoints(scattered);
+  const Counts far = run(true, removed);
+  std::printf("outliers: 600 scattered points; left out %ld of them and %ld of the box's, %ld "
+              "marked\n",
+    far.StrayLeftOut, far.LeftOutOfBox, far.StrayMarked);
+  FP_CHECK(far.StrayLeftOut >= 570 && far.LeftOutOfBox == 0 && far.StrayMarked <= 30,
+    "outliers: scattered: %ld of 600 left out, %ld of the box, %ld marked", far.StrayLeftOut,
+    far.LeftOutOfBox, far.StrayMarked);
+  source->SetNoiseFactor(0.0);
+  source->Update();
+  removed->SetInputData(source->GetOutput());
+  removed->Update();
+  FP_CHECK(removed->GetNumberOfOutliers() == 0, "outliers: %lld left out of the clean box",
+    static_cast<long long>(removed->GetNumberOfOutliers()));
   return failures;
 }
 } // namespace
