@@ -23,6 +23,9 @@
 //   annular sector, a cube minus a cylinder, and smooth surfaces: a thin torus, a rounded
 //   super-toroid, a long flat ellipsoid, an open sheet of random hills, a bumpy sphere); --mesh
 //   reads STL, OBJ, PLY or VTP files.
+// - Outliers (--outliers): the box with stray points (moved off its faces, scattered around it),
+//   the default detector keeping them and leaving them out: false feature points of the box, stray
+//   points left out and marked.
 // With --check, every figure is compared with a floor (a little below the figure measured when the
 // floor was set) and the program fails when quality is lost.
 #include "FeaturePointsBenchmarkFigures.h"
@@ -759,6 +762,169 @@ std::vector<T> ParseList(const std::string& text)
   return values;
 }
 
+// --outliers: the box (vtkFeatureModelSource, 30,000 points, sigma = 0.25 s) with stray points
+// added, the default detector with RemoveOutliers off ("kept") and on (the default). False: the
+// box's points more than 4 s from every edge that are feature points, per 1000 points of the box;
+// then how many stray points are left out (zero normal) and marked (feature points).
+void OutlierTable()
+{
+  vtkNew<vtkFeatureModelSource> source;
+  source->SetModelToBox();
+  source->SetNumberOfPoints(30000);
+  source->SetNoiseFactor(0.25);
+  source->Update();
+  vtkPolyData* box = source->GetOutput();
+  const vtkIdType n = box->GetNumberOfPoints();
+  const double s = box->GetFieldData()->GetArray("CleanMeanSpacing")->GetTuple1(0);
+  const double size = source->GetSize();
+  vtkDataArray* distance = box->GetPointData()->GetArray("FeatureDistance");
+  const double* center = source->GetCenter();
+  const double half[3] = { 0.5 * size, 0.35 * size, 0.25 * size };
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto direction = [&](double v[3]) {
+    double length2 = 0.0;
+    do
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        v[c] = 2.0 * unit(random) - 1.0;
+      }
+      length2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    } while (length2 > 1.0 || length2 < 1e-6);
+    for (int c = 0; c < 3; ++c)
+    {
+      v[c] /= std::sqrt(length2);
+    }
+  };
+  struct Case
+  {
+    const char* Name;
+    std::function<void(vtkPoints*)> Add;
+  };
+  const std::vector<Case> cases = {
+    { "300 face points moved 4-10 s outward",
+      [&](vtkPoints* points) {
+        for (vtkIdType i = 0, added = 0; i < n && added < 300; i += 37)
+        {
+          double x[3];
+          box->GetPoint(i, x);
+          if (distance->GetTuple1(i) <= 6.0 * s)
+          {
+            continue;
+          }
+          int axis = 0;
+          for (int c = 1; c < 3; ++c)
+          {
+            axis = std::abs(x[c] - center[c]) / half[c] > std::abs(x[axis] - center[axis]) / half[axis]
+              ? c
+              : axis;
+          }
+          x[axis] += (x[axis] > center[axis] ? 1.0 : -1.0) * (4.0 + 6.0 * unit(random)) * s;
+          points->InsertNextPoint(x);
+          ++added;
+        }
+      } },
+    { "600 through a cube 20 times its size",
+      [&](vtkPoints* points) {
+        for (int i = 0; i < 600; ++i)
+        {
+          points->InsertNextPoint(center[0] + (unit(random) - 0.5) * 20.0 * size,
+            center[1] + (unit(random) - 0.5) * 20.0 * size,
+            center[2] + (unit(random) - 0.5) * 20.0 * size);
+        }
+      } },
+    { "1 % through its bounds and a fifth more",
+      [&](vtkPoints* points) {
+        for (int i = 0; i < 300; ++i)
+        {
+          double x[3];
+          for (int c = 0; c < 3; ++c)
+          {
+            x[c] = center[c] + (unit(random) - 0.5) * 2.4 * half[c];
+          }
+          points->InsertNextPoint(x);
+        }
+      } },
+    { "5 % the same",
+      [&](vtkPoints* points) {
+        for (int i = 0; i < 1500; ++i)
+        {
+          double x[3];
+          for (int c = 0; c < 3; ++c)
+          {
+            x[c] = center[c] + (unit(random) - 0.5) * 2.4 * half[c];
+          }
+          points->InsertNextPoint(x);
+        }
+      } },
+    { "2 % moved 3-10 s any way",
+      [&](vtkPoints* points) {
+        for (int i = 0; i < 600; ++i)
+        {
+          double x[3], v[3];
+          box->GetPoint(static_cast<vtkIdType>(unit(random) * n) % n, x);
+          direction(v);
+          const double step = (3.0 + 7.0 * unit(random)) * s;
+          points->InsertNextPoint(x[0] + step * v[0], x[1] + step * v[1], x[2] + step * v[2]);
+        }
+      } },
+    { "10 % the same",
+      [&](vtkPoints* points) {
+        for (int i = 0; i < 3000; ++i)
+        {
+          double x[3], v[3];
+          box->GetPoint(static_cast<vtkIdType>(unit(random) * n) % n, x);
+          direction(v);
+          const double step = (3.0 + 7.0 * unit(random)) * s;
+          points->InsertNextPoint(x[0] + step * v[0], x[1] + step * v[1], x[2] + step * v[2]);
+        }
+      } },
+  };
+  std::printf("Outliers: the box at 30000 points, sigma = 0.25 s, with stray points; false feature "
+              "points of the box per 1000 (beyond 4 s of every edge), stray points left out and "
+              "marked\n");
+  std::printf("%-46s | kept: false  marked | left out: false  left out  marked\n", "stray points");
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkPoints> points;
+    points->DeepCopy(box->GetPoints());
+    c.Add(points);
+    vtkNew<vtkPolyData> cloud;
+    cloud->SetPoints(points);
+    const vtkIdType stray = points->GetNumberOfPoints() - n;
+    double falses[2] = { 0.0, 0.0 };
+    long leftOut[2] = { 0, 0 }, marked[2] = { 0, 0 };
+    for (int remove = 0; remove < 2; ++remove)
+    {
+      auto filter = NewCrease();
+      filter->SetRemoveOutliers(remove != 0);
+      filter->SetInputData(cloud);
+      filter->Update();
+      vtkPointData* out = filter->GetOutput()->GetPointData();
+      vtkDataArray* mask = out->GetArray("FeatureMask");
+      vtkDataArray* normals = out->GetArray("Normals");
+      long falseOnBox = 0;
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        const bool feature = mask->GetTuple1(i) != 0.0;
+        if (i < n)
+        {
+          falseOnBox += feature && distance->GetTuple1(i) > 4.0 * s;
+          continue;
+        }
+        double v[3];
+        normals->GetTuple(i, v);
+        leftOut[remove] += v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0;
+        marked[remove] += feature;
+      }
+      falses[remove] = 1000.0 * falseOnBox / n;
+    }
+    std::printf("%-40s %5lld | %11.2f %7ld | %15.2f %9ld %7ld\n", c.Name,
+      static_cast<long long>(stray), falses[0], marked[0], falses[1], leftOut[1], marked[1]);
+  }
+}
+
 void Usage(const char* name)
 {
   std::printf("usage: %s [--scale F] [--pcednet DIR] [--section N] [--check]\n"
@@ -768,6 +934,8 @@ void Usage(const char* name)
               "                 (default: %s)\n"
               "  --section N    run only section N (1-8); may be repeated (default: 1-7; section 8,\n"
               "                 the meshes made in code, runs only when named)\n"
+              "  --outliers     the box with stray points, the detector keeping and leaving them out;\n"
+              "                 runs alone unless --section is given\n"
               "  --mesh FILE... surface meshes (.stl, .obj, .ply, .vtp) sampled as clouds, their\n"
               "                 sharp edges the ground truth; runs these alone unless --section is given\n"
               "  --mesh-points LIST  points sampled per mesh (default 20000,100000)\n"
@@ -795,6 +963,7 @@ int main(int argc, char* argv[])
   std::vector<std::string> builtin;
   std::string saveDir;
   bool wangYuan = true;
+  bool outliers = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -819,6 +988,10 @@ int main(int argc, char* argv[])
     else if (a == "--check")
     {
       CheckFigures = true;
+    }
+    else if (a == "--outliers")
+    {
+      outliers = true;
     }
     else if (a == "--mesh" && i + 1 < argc)
     {
@@ -896,7 +1069,7 @@ int main(int argc, char* argv[])
   const auto methods = Methods();
   // Section 8 runs only when named; --mesh alone runs only the mesh files.
   auto wanted = [&](int section) {
-    return sections.empty() ? section <= 7 && meshFiles.empty()
+    return sections.empty() ? section <= 7 && meshFiles.empty() && !outliers
                             : std::find(sections.begin(), sections.end(), section) != sections.end();
   };
   std::printf("FeaturePoints: held-out quality with default parameters\n"
@@ -913,6 +1086,12 @@ int main(int argc, char* argv[])
     { vtkFeatureModelSource::CYLINDER, { 0.95, 0.97 } },
     { vtkFeatureModelSource::BRACKET, { 0.96, 0.95 } },
   };
+
+  if (outliers)
+  {
+    OutlierTable();
+    std::printf("\n");
+  }
 
   // 1. CAD-like parts, sigma = 0.5 s.
   if (wanted(1))
