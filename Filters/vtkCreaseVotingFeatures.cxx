@@ -3788,9 +3788,12 @@ int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
     }
     table.Store(first, count, block);
   };
-  // The warnings about the cloud wait for the choice between the cloud and its distinct positions.
+  // The warnings about the cloud wait for the choice between the cloud and its distinct positions
+  // or its points without the outliers: the run that scores them warns.
   const bool mayMerge = this->MergeCopies && !this->OnSites && !this->IsDistributed();
-  this->DeferCloudWarnings = mayMerge;
+  const bool mayScreen =
+    this->RemoveOutliers && this->OutlierRuns < MaxOutlierRuns - 1 && !this->IsDistributed();
+  this->DeferCloudWarnings = mayMerge || mayScreen;
   const bool searched = this->SearchAllPoints(points, n, kNear, neighborhoods, ids, store, 0.1);
   this->DeferCloudWarnings = false;
   if (!searched)
@@ -3811,9 +3814,8 @@ int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
       std::vector<vtkIdType>().swap(ids);
       return this->DetectOnSites(input, output, site, sites, tolerance);
     }
-    this->WarnAboutCloud(neighborhoods);
   }
-  if (this->RemoveOutliers && this->OutlierRuns < MaxOutlierRuns - 1)
+  if (mayScreen)
   {
     this->BeginStage("outliers");
     std::vector<vtkIdType> site;
@@ -3830,6 +3832,10 @@ int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
       --this->OutlierRuns;
       return ok;
     }
+  }
+  if (mayMerge || mayScreen)
+  {
+    this->WarnAboutCloud(neighborhoods);
   }
   const featurepoints::PointReader reader(neighborhoods->GetPoints()); // renumbered
   CreaseRun run(reader, ids, table, k, kNear, this->NumberOfNeighbors, this->MeanSpacing, n);
