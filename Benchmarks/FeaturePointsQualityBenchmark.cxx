@@ -797,6 +797,29 @@ void OutlierTable()
       v[c] /= std::sqrt(length2);
     }
   };
+  // `count` points through the box's bounds enlarged by a fifth; `count` of its points each
+  // moved 3 to 10 s in a random direction.
+  auto around = [&](vtkPoints* points, int count) {
+    for (int i = 0; i < count; ++i)
+    {
+      double x[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        x[c] = center[c] + (unit(random) - 0.5) * 2.4 * half[c];
+      }
+      points->InsertNextPoint(x);
+    }
+  };
+  auto moved = [&](vtkPoints* points, int count) {
+    for (int i = 0; i < count; ++i)
+    {
+      double x[3], v[3];
+      box->GetPoint(static_cast<vtkIdType>(unit(random) * n) % n, x);
+      direction(v);
+      const double step = (3.0 + 7.0 * unit(random)) * s;
+      points->InsertNextPoint(x[0] + step * v[0], x[1] + step * v[1], x[2] + step * v[2]);
+    }
+  };
   struct Case
   {
     const char* Name;
@@ -834,52 +857,10 @@ void OutlierTable()
             center[2] + (unit(random) - 0.5) * 20.0 * size);
         }
       } },
-    { "1 % through its bounds and a fifth more",
-      [&](vtkPoints* points) {
-        for (int i = 0; i < 300; ++i)
-        {
-          double x[3];
-          for (int c = 0; c < 3; ++c)
-          {
-            x[c] = center[c] + (unit(random) - 0.5) * 2.4 * half[c];
-          }
-          points->InsertNextPoint(x);
-        }
-      } },
-    { "5 % the same",
-      [&](vtkPoints* points) {
-        for (int i = 0; i < 1500; ++i)
-        {
-          double x[3];
-          for (int c = 0; c < 3; ++c)
-          {
-            x[c] = center[c] + (unit(random) - 0.5) * 2.4 * half[c];
-          }
-          points->InsertNextPoint(x);
-        }
-      } },
-    { "2 % moved 3-10 s any way",
-      [&](vtkPoints* points) {
-        for (int i = 0; i < 600; ++i)
-        {
-          double x[3], v[3];
-          box->GetPoint(static_cast<vtkIdType>(unit(random) * n) % n, x);
-          direction(v);
-          const double step = (3.0 + 7.0 * unit(random)) * s;
-          points->InsertNextPoint(x[0] + step * v[0], x[1] + step * v[1], x[2] + step * v[2]);
-        }
-      } },
-    { "10 % the same",
-      [&](vtkPoints* points) {
-        for (int i = 0; i < 3000; ++i)
-        {
-          double x[3], v[3];
-          box->GetPoint(static_cast<vtkIdType>(unit(random) * n) % n, x);
-          direction(v);
-          const double step = (3.0 + 7.0 * unit(random)) * s;
-          points->InsertNextPoint(x[0] + step * v[0], x[1] + step * v[1], x[2] + step * v[2]);
-        }
-      } },
+    { "1 % through its bounds and a fifth more", [&](vtkPoints* points) { around(points, 300); } },
+    { "5 % the same", [&](vtkPoints* points) { around(points, 1500); } },
+    { "2 % moved 3-10 s any way", [&](vtkPoints* points) { moved(points, 600); } },
+    { "10 % the same", [&](vtkPoints* points) { moved(points, 3000); } },
   };
   std::printf("Outliers: the box at 30000 points, sigma = 0.25 s, with stray points; false feature "
               "points of the box per 1000 (beyond 4 s of every edge), stray points left out and "
