@@ -1489,12 +1489,18 @@ struct CreaseRun
     const std::vector<int32_t>& place, const std::vector<long long>& key,
     std::vector<int32_t>& target, std::vector<uint8_t>& weight, std::vector<signed char>& own,
     std::vector<double>& share) const;
+  // Drops (weight NoLink) the links that Kruskal's pass would leave out in any case: each the
+  // heaviest, in SpanForest()'s order, of a triangle or a pair of links found in the rows of its
+  // two ends. In parallel, a block of rows at a time; SpanForest() then orders and joins the rest.
+  // Returns the number of links before.
+  size_t DropCycleMaxima(int kn, const std::vector<int32_t>& rows, const std::vector<int32_t>& place,
+    const std::vector<int32_t>& target, std::vector<uint8_t>& weight) const;
   // Kruskal over the own rows' links in a strict order (weight, then the keys of both ends), into
   // sets of rows; into `forest` (unless null) the links it keeps, 4 numbers each (weight, key
   // from, key to, 1 if turning).
   void SpanForest(int kn, const std::vector<int32_t>& rows, const std::vector<int32_t>& target,
-    const std::vector<uint8_t>& weight, const std::vector<long long>& key, SignedSets& sets,
-    std::vector<double>* forest) const;
+    const std::vector<uint8_t>& weight, const std::vector<long long>& key, size_t weighed,
+    SignedSets& sets, std::vector<double>* forest) const;
   // Storage of the fits, the sheets and the per-point flags of Stream()'s passes.
   void PrepareFits(vtkPointCloudNeighborhoods* neighborhoods);
   // Links of point id (its row of KNear nearest) across to the neighbouring rows of a sampling in
@@ -1967,9 +1973,123 @@ void CreaseRun::WeighLinks(int kn, const double center[3], const float* normal,
   });
 }
 
+size_t CreaseRun::DropCycleMaxima(int kn, const std::vector<int32_t>& rows,
+  const std::vector<int32_t>& place, const std::vector<int32_t>& target,
+  std::vector<uint8_t>& weight) const
+{
+  // The cycle property: a link that is the heaviest of a cycle (in a strict order) is in no
+  // minimum spanning forest. Kruskal reaches it after the cycle's other links, which have joined
+  // its ends by then, so it joins nothing: dropping it leaves the forest, link for link, and with
+  // it the sides, as they were. The order is SpanForest()'s: by weight, then by slot (the rows in
+  // the order of their keys, each row's links in the order of their ends' keys).
+  const size_t links = static_cast<size_t>(
+    std::count_if(weight.begin(), weight.end(), [](uint8_t w) { return w != NoLink; }));
+  constexpr int MaskBits = 64;
+  if (kn > MaskBits || rows.empty())
+  {
+    return links; // a row's links in one mask, or none dropped
+  }
+  auto end = [](int32_t t) { return t < 0 ? ~t : t; };
+  // The rows in the cloud's (the grid's) order, where a row's ends were read shortly before: the
+  // links lie in the keys' order, which for a shuffled input is anywhere in memory. Blocks of
+  // rows: each block's links are dropped once all of its rows are read, so that a row is never
+  // read while it changes. A later block reads the dropped links as no link and finds fewer
+  // cycles through them, not wrong ones: every link it drops is the heaviest of a cycle of the
+  // links as first weighed.
+  const vtkIdType block = 65536;
+  std::vector<uint64_t> dropped(static_cast<size_t>(std::min(block, this->Rows)));
+  for (vtkIdType first = 0; first < this->Rows; first += block)
+  {
+    const vtkIdType last = std::min(this->Rows, first + block);
+    vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType stop) {
+      std::array<uint16_t, MaskBits> ranked;
+      std::array<int32_t, MaskBits> seen;
+      for (vtkIdType r = begin; r < stop; ++r)
+      {
+        dropped[r - first] = 0;
+        if (place[r] < 0)
+        {
+          continue; // a halo row
+        }
+        const size_t base = static_cast<size_t>(place[r]) * kn;
+        // The row's links in their order: weight, then place in the row.
+        int count = 0;
+        for (int j = 0; j < kn; ++j)
+        {
+          if (weight[base + j] != NoLink)
+          {
+            const uint16_t order = static_cast<uint16_t>(weight[base + j] * MaskBits + j);
+            int at = count++;
+            for (; at > 0 && ranked[at - 1] > order; --at)
+            {
+              ranked[at] = ranked[at - 1];
+            }
+            ranked[at] = order;
+          }
+        }
+        // Each link against the lighter links of both its ends: the link back from the other
+        // end (a pair), or a third point that both ends link to (a triangle).
+        uint64_t mask = 0, bloom = 0;
+        for (int k = 0; k < count; ++k)
+        {
+          const int j = ranked[k] % MaskBits;
+          const size_t e = base + j;
+          const uint8_t we = weight[e];
+          const int32_t q = place[end(target[e])];
+          if (q >= 0) // a halo row has no links of its own here
+          {
+            const size_t other = static_cast<size_t>(q) * kn;
+            bool cycle = false;
+            for (int i = 0; i < kn && !cycle; ++i)
+            {
+              const size_t f = other + i;
+              const uint8_t wf = weight[f];
+              if (wf > we || (wf == we && f > e) || wf == NoLink)
+              {
+                continue;
+              }
+              const int32_t c = end(target[f]);
+              cycle = c == r;
+              if (!cycle && (bloom >> (c % MaskBits) & 1))
+              {
+                for (int m = 0; m < k && !cycle; ++m)
+                {
+                  cycle = seen[m] == c;
+                }
+              }
+            }
+            if (cycle)
+            {
+              mask |= uint64_t(1) << j;
+            }
+          }
+          seen[k] = end(target[e]);
+          bloom |= uint64_t(1) << (seen[k] % MaskBits);
+        }
+        dropped[r - first] = mask;
+      }
+    });
+    vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType stop) {
+      for (vtkIdType r = begin; r < stop; ++r)
+      {
+        uint64_t mask = dropped[r - first];
+        for (size_t slot = static_cast<size_t>(place[r]) * kn; mask; mask >>= 1, ++slot)
+        {
+          if (mask & 1)
+          {
+            weight[slot] = NoLink;
+          }
+        }
+      }
+    });
+  }
+  return links;
+}
+
 void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
   const std::vector<int32_t>& target, const std::vector<uint8_t>& weight,
-  const std::vector<long long>& key, SignedSets& sets, std::vector<double>* forest) const
+  const std::vector<long long>& key, size_t weighed, SignedSets& sets,
+  std::vector<double>* forest) const
 {
   // Kruskal: the links by weight, then by their ends' keys (a strict order, the same in any
   // piece: the forest is then the cloud's one minimum spanning forest). The own rows' links lie
@@ -1979,10 +2099,9 @@ void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
   {
     ++count[w];
   }
-  // A few passes, each over a range of weights holding about a sixteenth of the links, so that
-  // the order of only that many is held at a time.
-  const size_t links = weight.size() - count[NoLink];
-  const size_t share = std::max<size_t>(links / 16, 1);
+  // A few passes, each over a range of weights holding at most about a sixteenth of the links
+  // as weighed (before DropCycleMaxima()), so that the order of only that many is held at a time.
+  const size_t share = std::max<size_t>(weighed / 16, 1);
   auto end = [](int32_t t) { return t < 0 ? ~t : t; };
   if (forest)
   {
@@ -2061,6 +2180,7 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
   std::vector<uint8_t> weight;
   std::vector<double> share;
   this->WeighLinks(kn, center, normal, frameOf, frames, place, key, target, weight, own, share);
+  const size_t weighed = this->DropCycleMaxima(kn, rows, place, target, weight);
   std::vector<int32_t>().swap(place);
   std::vector<int32_t>().swap(frameOf);
   std::vector<HingeFrame>().swap(frames);
@@ -2072,7 +2192,8 @@ void CreaseRun::OrientNormals(int kn, const double center[3], const float* norma
   {
     std::vector<double> forest;
     // One process: the sets are the forest's result, its links are not needed (32 bytes a point).
-    this->SpanForest(kn, rows, target, weight, key, local, this->Distributed ? &forest : nullptr);
+    this->SpanForest(
+      kn, rows, target, weight, key, weighed, local, this->Distributed ? &forest : nullptr);
     std::vector<int32_t>().swap(target);
     std::vector<uint8_t>().swap(weight);
     if (this->Distributed)
