@@ -1163,6 +1163,25 @@ struct HingeFrame
 // The orientation's links: no link.
 constexpr uint8_t NoLink = 255;
 
+// Asks memory for the cache line at p, to be read (or written) shortly; nothing where the
+// compiler has no such hint.
+inline void Prefetch(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+inline void PrefetchForWrite(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p, 1);
+#else
+  (void)p;
+#endif
+}
+
 // Union-find of signed sets: each element's side relative to its set's root (union by rank,
 // path halving). Which element is the root does not matter: a tree's sides are set by its
 // links, up to one sign that OrientNormals() chooses by the volume.
@@ -1195,6 +1214,8 @@ public:
     turn = t;
     return i;
   }
+  // Asks memory for element i's parent, to be read shortly.
+  void PrefetchParent(int32_t i) const { Prefetch(this->Parent.data() + i); }
   // Joins the sets of a and b, b's side turned against a's where `turned`; false where they are
   // one set already.
   bool Join(int32_t a, int32_t b, bool turned)
@@ -1890,6 +1911,15 @@ void CreaseRun::WeighLinks(int kn, const double center[3], const float* normal,
       {
         continue;
       }
+      // The next row's slots, which lie in the keys' order (anywhere in memory for a shuffled
+      // input), asked of memory while this one is weighed.
+      if (r + 1 < end && place[r + 1] >= 0)
+      {
+        const size_t next = static_cast<size_t>(place[r + 1]) * kn;
+        PrefetchForWrite(weight.data() + next);
+        PrefetchForWrite(target.data() + next);
+        PrefetchForWrite(target.data() + next + kn - 1);
+      }
       const Eigen::Vector3d n = normalOf(r);
       this->Reader.Get(this->Ids[r], x);
       const int32_t* row = this->Row(r, nearest.data(), kn);
@@ -2012,6 +2042,27 @@ size_t CreaseRun::DropCycleMaxima(int kn, const std::vector<int32_t>& rows,
           continue; // a halo row
         }
         const size_t base = static_cast<size_t>(place[r]) * kn;
+        // The rows of its links' other ends, asked of memory at once rather than one by one.
+        for (int j = 0; j < kn; ++j)
+        {
+          if (weight[base + j] != NoLink)
+          {
+            const int32_t q = place[end(target[base + j])];
+            if (q >= 0)
+            {
+              Prefetch(weight.data() + static_cast<size_t>(q) * kn);
+              Prefetch(target.data() + static_cast<size_t>(q) * kn);
+              Prefetch(target.data() + static_cast<size_t>(q) * kn + kn - 1);
+            }
+          }
+        }
+        if (r + 1 < stop && place[r + 1] >= 0)
+        {
+          const size_t next = static_cast<size_t>(place[r + 1]) * kn;
+          Prefetch(weight.data() + next);
+          Prefetch(target.data() + next);
+          Prefetch(target.data() + next + kn - 1);
+        }
         // The row's links in their order: weight, then place in the row.
         int count = 0;
         for (int j = 0; j < kn; ++j)
@@ -2134,8 +2185,22 @@ void CreaseRun::SpanForest(int kn, const std::vector<int32_t>& rows,
       at[w] += step[w];
     }
     order.resize(held);
-    for (uint64_t slot : order)
+    // The links come in the order of their weights, from anywhere in the cloud: the rows and
+    // the sets that a link a few places ahead reads are asked of memory before it is joined.
+    constexpr size_t Ahead = 16;
+    for (size_t i = 0; i < order.size(); ++i)
     {
+      if (i + 2 * Ahead < order.size())
+      {
+        Prefetch(target.data() + order[i + 2 * Ahead]);
+        Prefetch(rows.data() + order[i + 2 * Ahead] / kn);
+      }
+      if (i + Ahead < order.size())
+      {
+        sets.PrefetchParent(rows[order[i + Ahead] / kn]);
+        sets.PrefetchParent(end(target[order[i + Ahead]]));
+      }
+      const uint64_t slot = order[i];
       const int32_t r = rows[slot / kn];
       const int32_t t = target[slot];
       if (sets.Join(r, end(t), t < 0) && forest)
