@@ -1514,8 +1514,9 @@ struct CreaseRun
   // heaviest, in SpanForest()'s order, of a triangle or a pair of links found in the rows of its
   // two ends. In parallel, a block of rows at a time; SpanForest() then orders and joins the rest.
   // Returns the number of links before.
-  size_t DropCycleMaxima(int kn, const std::vector<int32_t>& rows, const std::vector<int32_t>& place,
-    const std::vector<int32_t>& target, std::vector<uint8_t>& weight) const;
+  size_t DropCycleMaxima(int kn, const std::vector<int32_t>& rows,
+    const std::vector<int32_t>& place, const std::vector<int32_t>& target,
+    std::vector<uint8_t>& weight) const;
   // Kruskal over the own rows' links in a strict order (weight, then the keys of both ends), into
   // sets of rows; into `forest` (unless null) the links it keeps, 4 numbers each (weight, key
   // from, key to, 1 if turning).
