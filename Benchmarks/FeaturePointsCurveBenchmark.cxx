@@ -545,6 +545,14 @@ int main(int argc, char* argv[])
         Floor(row + " F1", r.F1, 0.95);
         Ceiling(row + " lines per true curve", r.PerCurve, 1.2);
       }
+      else if (entry.second.Model == vtkFeatureModelSource::PARALLEL_CREASES &&
+        entry.second.Separation == 2.5)
+      {
+        // Creases 5 s apart, their bands one strip, traced on the points moved onto their
+        // voters' lines: F1 0.761 and 0.768 at --scale 0.1 and 0.3 (0.402 and 0.422 traced on
+        // the ridges of the score).
+        Floor(row + " F1", r.F1, 0.70);
+      }
       else if (entry.second.Noise == 0.0)
       {
         // The clean uniform parts: the detector's false points beside the creases still break

@@ -458,6 +458,9 @@ public:
   std::vector<unsigned char> Supported; // per trace point: voted for, or on a border
   std::vector<double> Scores; // per feature point: the detector's score (KeepRidges)
   std::vector<V3> TracePoints;
+  // Per trace point, its position moved by the detector's CreaseOffset (crease points; NaN
+  // elsewhere and where the input has no offsets): where it is traced in a strip (KeepRidges).
+  std::vector<V3> TraceMoved;
   // The crease points moved by the detector's CreaseOffset onto the line their voters agree on.
   std::vector<V3> Moved;
   PointSearch MovedSearch;
@@ -633,13 +636,15 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
     }
     if (feature)
     {
+      V3 moved = V3::Constant(std::numeric_limits<double>::quiet_NaN());
       if (offsets && (type == CONVEX || type == CONCAVE))
       {
         V3 offset;
         offsets->GetTuple(i, offset.data());
         if (offset.allFinite() && offset.squaredNorm() > 0.0)
         {
-          this->Moved.push_back(x + offset);
+          moved = x + offset;
+          this->Moved.push_back(moved);
         }
       }
       // Without a score, every feature point supports a curve. A crease point that no fit voted
@@ -652,6 +657,7 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
       {
         this->TraceIndex.push_back(static_cast<vtkIdType>(this->Points.size()));
         this->TracePoints.push_back(x);
+        this->TraceMoved.push_back(moved);
         this->Supported.push_back(supported);
         this->Scores.push_back(score);
       }
@@ -705,48 +711,81 @@ void CurveRun::KeepRidges()
   // crease direction (a strip of feature points over two or more close parallel creases; not a
   // corner, where the normals spread in three dimensions), only the points on the ridges of the
   // detector's score are kept: those whose score reaches the median of the crease points within
-  // RidgeRadius.
+  // RidgeRadius. Where, besides, the trace points moved by the detector's CreaseOffset are no line
+  // either, the strip holds several creases side by side, each the line its voters agree on: the
+  // crease points within FitRadius of such a point are traced where they are moved to, every one
+  // of them (the moved points of a strip lie on its creases, not between them). Where the moved
+  // points form one line, the strip is the wide band of one crease and keeps its ridges.
   const vtkIdType n = static_cast<vtkIdType>(this->TracePoints.size());
-  std::vector<vtkIdType> ids;
+  std::vector<vtkIdType> ids, withMoved;
   std::vector<double> around;
+  std::vector<unsigned char> ridge(n, 1), parallel(n, 0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const unsigned char type = this->Type[this->TraceIndex[i]];
+    if (type != CONVEX && type != CONCAVE)
+    {
+      continue;
+    }
+    const LineFit f = this->FitAt(this->TracePoints[i], ids);
+    V3 c;
+    if (f.Count >= MinFitPoints && f.Flatness > MaxFlatness &&
+      this->NormalsCrease(this->TracePoints[i], c))
+    {
+      withMoved.clear();
+      for (vtkIdType j : ids)
+      {
+        if (this->TraceMoved[j].allFinite())
+        {
+          withMoved.push_back(j);
+        }
+      }
+      const LineFit moved = FitLine(this->TraceMoved, withMoved, this->TracePoints[i]);
+      parallel[i] = moved.Count >= MinFitPoints && moved.Flatness > MaxFlatness;
+      this->TraceSearch.Within(this->TracePoints[i], RidgeRadius * this->S, ids);
+      around.clear();
+      for (vtkIdType j : ids)
+      {
+        if (this->Type[this->TraceIndex[j]] != BORDER)
+        {
+          around.push_back(this->Scores[j]);
+        }
+      }
+      const size_t middle = around.size() / 2;
+      std::nth_element(around.begin(), around.begin() + middle, around.end());
+      ridge[i] = !(this->Scores[i] < around[middle]);
+    }
+  }
+  // The crease points within FitRadius of a strip of parallel creases.
+  std::vector<unsigned char> inStrip(n, 0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (parallel[i])
+    {
+      this->TraceSearch.Within(this->TracePoints[i], this->R, ids);
+      for (vtkIdType j : ids)
+      {
+        inStrip[j] = this->TraceMoved[j].allFinite() ? 1 : 0;
+      }
+    }
+  }
   std::vector<V3> points;
   std::vector<vtkIdType> index;
   std::vector<unsigned char> supported;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const unsigned char type = this->Type[this->TraceIndex[i]];
-    bool keep = true;
-    if (type == CONVEX || type == CONCAVE)
+    if (!inStrip[i] && !ridge[i])
     {
-      const LineFit f = this->FitAt(this->TracePoints[i], ids);
-      V3 c;
-      if (f.Count >= MinFitPoints && f.Flatness > MaxFlatness &&
-        this->NormalsCrease(this->TracePoints[i], c))
-      {
-        this->TraceSearch.Within(this->TracePoints[i], RidgeRadius * this->S, ids);
-        around.clear();
-        for (vtkIdType j : ids)
-        {
-          if (this->Type[this->TraceIndex[j]] != BORDER)
-          {
-            around.push_back(this->Scores[j]);
-          }
-        }
-        const size_t middle = around.size() / 2;
-        std::nth_element(around.begin(), around.begin() + middle, around.end());
-        keep = !(this->Scores[i] < around[middle]);
-      }
+      continue;
     }
-    if (keep)
-    {
-      points.push_back(this->TracePoints[i]);
-      index.push_back(this->TraceIndex[i]);
-      supported.push_back(this->Supported[i]);
-    }
+    points.push_back(inStrip[i] ? this->TraceMoved[i] : this->TracePoints[i]);
+    index.push_back(this->TraceIndex[i]);
+    supported.push_back(this->Supported[i]);
   }
   this->TracePoints.swap(points);
   this->TraceIndex.swap(index);
   this->Supported.swap(supported);
+  std::vector<V3>().swap(this->TraceMoved); // indexed as the trace points were
   this->TraceSearch.Build(this->TracePoints);
 }
 
