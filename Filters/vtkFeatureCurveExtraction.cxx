@@ -711,11 +711,12 @@ void CurveRun::KeepRidges()
   // crease direction (a strip of feature points over two or more close parallel creases; not a
   // corner, where the normals spread in three dimensions), only the points on the ridges of the
   // detector's score are kept: those whose score reaches the median of the crease points within
-  // RidgeRadius. Where, besides, the trace points moved by the detector's CreaseOffset are no line
-  // either, the strip holds several creases side by side, each the line its voters agree on: the
-  // crease points within FitRadius of such a point are traced where they are moved to, every one
-  // of them (the moved points of a strip lie on its creases, not between them). Where the moved
-  // points form one line, the strip is the wide band of one crease and keeps its ridges.
+  // RidgeRadius. Where the normals show one crease direction but the trace points moved by the
+  // detector's CreaseOffset (onto the line their voters agree on) form no line, whether the
+  // points themselves do or not, the neighbourhood holds creases side by side: the crease points
+  // within FitRadius of such a point are traced where they are moved to, every one of them (the
+  // moved points of a strip lie on its creases, not between them). Where the moved points form
+  // one line, a strip is the wide band of one crease and keeps its ridges.
   const vtkIdType n = static_cast<vtkIdType>(this->TracePoints.size());
   std::vector<vtkIdType> ids, withMoved;
   std::vector<double> around;
@@ -729,32 +730,36 @@ void CurveRun::KeepRidges()
     }
     const LineFit f = this->FitAt(this->TracePoints[i], ids);
     V3 c;
-    if (f.Count >= MinFitPoints && f.Flatness > MaxFlatness &&
-      this->NormalsCrease(this->TracePoints[i], c))
+    if (f.Count < MinFitPoints || !this->NormalsCrease(this->TracePoints[i], c))
     {
-      withMoved.clear();
-      for (vtkIdType j : ids)
-      {
-        if (this->TraceMoved[j].allFinite())
-        {
-          withMoved.push_back(j);
-        }
-      }
-      const LineFit moved = FitLine(this->TraceMoved, withMoved, this->TracePoints[i]);
-      parallel[i] = moved.Count >= MinFitPoints && moved.Flatness > MaxFlatness;
-      this->TraceSearch.Within(this->TracePoints[i], RidgeRadius * this->S, ids);
-      around.clear();
-      for (vtkIdType j : ids)
-      {
-        if (this->Type[this->TraceIndex[j]] != BORDER)
-        {
-          around.push_back(this->Scores[j]);
-        }
-      }
-      const size_t middle = around.size() / 2;
-      std::nth_element(around.begin(), around.begin() + middle, around.end());
-      ridge[i] = !(this->Scores[i] < around[middle]);
+      continue;
     }
+    withMoved.clear();
+    for (vtkIdType j : ids)
+    {
+      if (this->TraceMoved[j].allFinite())
+      {
+        withMoved.push_back(j);
+      }
+    }
+    const LineFit moved = FitLine(this->TraceMoved, withMoved, this->TracePoints[i]);
+    parallel[i] = moved.Count >= MinFitPoints && moved.Flatness > MaxFlatness;
+    if (!(f.Flatness > MaxFlatness))
+    {
+      continue;
+    }
+    this->TraceSearch.Within(this->TracePoints[i], RidgeRadius * this->S, ids);
+    around.clear();
+    for (vtkIdType j : ids)
+    {
+      if (this->Type[this->TraceIndex[j]] != BORDER)
+      {
+        around.push_back(this->Scores[j]);
+      }
+    }
+    const size_t middle = around.size() / 2;
+    std::nth_element(around.begin(), around.begin() + middle, around.end());
+    ridge[i] = !(this->Scores[i] < around[middle]);
   }
   // The crease points within FitRadius of a strip of parallel creases.
   std::vector<unsigned char> inStrip(n, 0);

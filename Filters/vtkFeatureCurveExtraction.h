@@ -19,11 +19,12 @@
  *    trace points form no line while the
  *    normals around them show one crease direction (a strip of feature points over close parallel
  *    creases), only those whose score (the input's active scalars) reaches the median of the
- *    crease points within 2 s: the ridges of the score. Where the same points moved by the
- *    detector's `CreaseOffset` (onto the line their voters agree on) form no line either, the
- *    strip holds creases side by side: every crease point within FitRadius s of such a point is
- *    traced where it is moved to (parallel creases 5 s apart: curve F1 0.42 -> 0.77). Where the
- *    moved points form one line, the strip is the wide band of one crease and keeps its ridges.
+ *    crease points within 2 s: the ridges of the score. Where the normals show one crease
+ *    direction but the crease points moved by the detector's `CreaseOffset` (onto the line their
+ *    voters agree on) form no line, the neighbourhood holds creases side by side: every crease
+ *    point within FitRadius s of such a point is traced where it is moved to (parallel creases
+ *    5 s apart: curve F1 0.42 -> 0.80). Where the moved points form one line, a strip is the wide
+ *    band of one crease and keeps its ridges.
  *    From the most line-like trace point not yet covered, corners (FeatureType 3) aside, a
  *    trace steps StepLength s at a time along the
  *    line fitted (PCA) to the trace points within FitRadius s (1.5 FitRadius where that fit
