@@ -729,8 +729,7 @@ void CurveRun::KeepRidges()
       continue;
     }
     const LineFit f = this->FitAt(this->TracePoints[i], ids);
-    V3 c;
-    if (f.Count < MinFitPoints || !this->NormalsCrease(this->TracePoints[i], c))
+    if (f.Count < MinFitPoints)
     {
       continue;
     }
@@ -743,8 +742,16 @@ void CurveRun::KeepRidges()
       }
     }
     const LineFit moved = FitLine(this->TraceMoved, withMoved, this->TracePoints[i]);
-    parallel[i] = moved.Count >= MinFitPoints && moved.Flatness > MaxFlatness;
-    if (!(f.Flatness > MaxFlatness))
+    const bool movedNoLine = moved.Count >= MinFitPoints && moved.Flatness > MaxFlatness;
+    const bool noLine = f.Flatness > MaxFlatness;
+    // The normals' test (the costliest) only where either answer depends on it.
+    V3 c;
+    if ((!movedNoLine && !noLine) || !this->NormalsCrease(this->TracePoints[i], c))
+    {
+      continue;
+    }
+    parallel[i] = movedNoLine;
+    if (!noLine)
     {
       continue;
     }
