@@ -25,7 +25,9 @@
  *    a seam of the sampling, not between a wall's sides. Where one plane explains these points
  *    within the noise (the bound of step 2b), and one plane likewise explains those of each of
  *    its 40 nearest on the sheet, no feature is in view: the point gets that plane and no line
- *    (steps 1-3 are skipped).
+ *    (steps 1-3 are skipped). Where one of those 40 is not explained (a feature in view), the
+ *    point gets the hinge of step 1 from its second start alone (the cut through the centroid):
+ *    one sheet that one plane explains needs neither the crossing planes nor the sheets' split.
  * 1. Two-plane fit. The points are split in two by the direction in which their normals (PCA of
  *    the NormalNeighbors nearest, as Eq. 3 of the paper) vary most; then, as in k-means with
  *    planes, each side gets its least-squares plane and every point goes to the nearer plane,
