@@ -539,6 +539,35 @@ Hinge RefineHinge(const std::vector<Eigen::Vector3d>& p, Moments half[2], const 
   return best;
 }
 
+// The hinge started from the cut through the centroid c of the points p, across the direction e
+// in which their normals vary most (less its part along the plane's normal n), refined by
+// position (RefineHinge); none (RSS negative) where e is along n.
+Hinge CutHinge(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& c,
+  const Eigen::Vector3d& n, const Eigen::Vector3d& e)
+{
+  const Eigen::Vector3d cut = e - e.dot(n) * n;
+  if (!(cut.squaredNorm() > 0.0))
+  {
+    return Hinge();
+  }
+  Moments half[2];
+  SplitMoments(p, c, cut, half);
+  return RefineHinge(p, half, n);
+}
+
+// Whether the hinge h formed and its line passes within the neighbourhood p (no farther from the
+// fitted point than its farthest point): a line outside it is no crease of it, but two nearly
+// parallel planes through the noise.
+bool HingeWithin(const Hinge& h, const std::vector<Eigen::Vector3d>& p)
+{
+  double reach = 0.0;
+  for (const Eigen::Vector3d& q : p)
+  {
+    reach = std::max(reach, q.squaredNorm());
+  }
+  return h.RSS >= 0.0 && h.X.squaredNorm() <= reach;
+}
+
 // The split of the points p in two groups by their heights along n: two-means in one dimension
 // (a threshold halfway between the groups' means, from the mean height, until the groups hold
 // still), label[j] 0 for the lower group, 1 for the upper. Returns the squared distance of the
@@ -779,24 +808,11 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
     half[label[j]].Add(p[j]);
   }
   const Hinge fromPlanes = RefineHinge(p, half, n1);
-  Hinge fromCut;
-  const Eigen::Vector3d cut = e - e.dot(n1) * n1;
-  if (cut.squaredNorm() > 0.0)
-  {
-    SplitMoments(p, c1, cut, half);
-    fromCut = RefineHinge(p, half, n1);
-  }
+  const Hinge fromCut = CutHinge(p, c1, n1, e);
   const Hinge& h = fromCut.RSS >= 0.0 && (fromPlanes.RSS < 0.0 || fromCut.RSS < fromPlanes.RSS)
     ? fromCut
     : fromPlanes;
-  // A line outside the neighbourhood (beyond its farthest point) is no crease of it: two nearly
-  // parallel planes through the noise.
-  double reach = 0.0;
-  for (const Eigen::Vector3d& q : p)
-  {
-    reach = std::max(reach, q.squaredNorm());
-  }
-  hasLine = h.RSS >= 0.0 && h.X.squaredNorm() <= reach;
+  hasLine = HingeWithin(h, p);
   if (hasLine)
   {
     rss2 = h.RSS;
@@ -839,8 +855,8 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
 // nearest-plane rounds of FitCrease() and the hinge started from their halves are left out. The
 // hinge comes from FitCrease()'s other start, the cut through the centroid across the direction
 // in which the normals vary most, refined by position (RefineHinge); the quadric gives the gain.
-// (Side by side with the full fit, 2 threads: the 160,000-point Model I cloud's extract 0.84x;
-// every quality and curve figure within 0.004.)
+// (Against the full fit, FeaturePointsScalingBenchmark at 160,000 points: the default detector's
+// extract 0.82x; every line of the quality and curve benchmarks within 0.004.)
 CreaseFit FitViewHinge(const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& nr)
 {
   CreaseFit fit;
@@ -854,20 +870,8 @@ CreaseFit FitViewHinge(const std::vector<Eigen::Vector3d>& p, const std::vector<
   const Eigen::Vector3d e = NormalsSpread(nr, n1);
   fit.RSS1 = fit.Cross.RSS2 = rss1;
   fit.RSSQ = FitQuadric(p, c1, n1, rss1);
-  Hinge h;
-  const Eigen::Vector3d cut = e - e.dot(n1) * n1;
-  if (cut.squaredNorm() > 0.0)
-  {
-    Moments half[2];
-    SplitMoments(p, c1, cut, half);
-    h = RefineHinge(p, half, n1);
-  }
-  double reach = 0.0;
-  for (const Eigen::Vector3d& q : p)
-  {
-    reach = std::max(reach, q.squaredNorm());
-  }
-  if (h.RSS >= 0.0 && h.X.squaredNorm() <= reach)
+  const Hinge h = CutHinge(p, c1, n1, e);
+  if (HingeWithin(h, p))
   {
     StoreLine(fit.Hinge, h.RSS, h.Sine, true, h.X, h.T, h.A, h.B, nr[0]);
   }
