@@ -47,13 +47,18 @@
  *    crossing planes come out parallel and several noise widths apart (two sheets the links
  *    did not separate), the fit is redone on P_i's sheet. Where the heights along the plane
  *    fall in two groups far apart for their spread and lying over each other (a wall's two
- *    sides), the k-means starts from those groups: the normals do not vary across a wall.
+ *    sides), the k-means starts from those groups: the normals do not vary across a wall. So it
+ *    does where a few of the far side's points lie off to one side of the point (a wall about
+ *    as thick as the links reach, seen at a smaller scale), when the heights across the plane
+ *    of the point's group split so and the groups' planes are parallel and apart.
  * 2. Crease gain G_i = (RSS_Q - RSS_2) / sigma^2: how much better the two planes fit than one
  *    smooth quadric height field over the one-plane fit (RSS: sums of squared distances), in
  *    units of the cloud's noise variance sigma^2. A cylinder or a sphere is explained by the
  *    quadric however curved, a crease is not. sigma^2 comes from the residual per degree of
  *    freedom of the quadric through each point's NormalNeighbors nearest (curvature is
- *    explained at that scale): the median over the cloud, or where fewer than half of those
+ *    explained at that scale): the median over the cloud, trimmed (the rows within the 95 %
+ *    point of pure noise at the estimate, their median scaled to the whole law's, until it
+ *    settles: features raise only the rows that see them), or where fewer than half of those
  *    neighbourhoods are free of features (details a few spacings apart) a lower quantile (1/4,
  *    1/10 or 1/20, the smallest estimate) scaled by the chi-square law of pure noise to the
  *    median it implies; never below (0.05 d)^2, d being the mean spacing. Where those nearest

@@ -656,12 +656,16 @@ int TestCreaseVotingFeatures(int, char*[])
     }
   }
 
-  // A plate 3 spacings thick (both sides sampled, noise 0.25 s, about 0.26 d): most points' 15
+  // A plate 3 spacings thick (both sides sampled, noise 0.25 s, about 0.23 d): most points' 15
   // nearest hold points of both sides, and the noise is taken on the point's own side where the
-  // two lie clearly over each other. Measured sigma/d 0.601 (1.06 when every neighbourhood's
-  // thickness counted as noise), 1,493 detections at precision 0.967. With sigma right and the
-  // two-plane fits started from the normals' split alone, precision was 0.197 (creases between
-  // the sides everywhere).
+  // two lie clearly over each other; where a few of the far side's points lie off to one side
+  // the split leaves them in, and the trimmed median leaves those rows out. Measured sigma/d
+  // 0.219 against the true 0.227 (the plain median read 0.601, 1.06 when every neighbourhood's
+  // thickness counted as noise); 1,735 detections at precision 0.987 (correct: within 4 s of a
+  // rim, as the benchmarks count). With sigma right and the two-plane fits started from the
+  // normals' split alone, precision was 0.197 (creases between the sides everywhere); started
+  // also from the sides where they lie off to one side, 0.883 (isolated points whose smallest
+  // scales gather a few of the far side's points).
   {
     vtkNew<vtkFeatureModelSource> source;
     source->SetModel(vtkFeatureModelSource::THIN_PLATE);
@@ -673,24 +677,32 @@ int TestCreaseVotingFeatures(int, char*[])
     vtkPolyData* cloud = source->GetOutput();
     auto filter = Run(cloud, true);
     const double ratio = filter->GetNoiseSigma() / filter->GetMeanSpacing();
-    vtkDataArray* truth = cloud->GetPointData()->GetArray("GroundTruth");
-    vtkUnsignedCharArray* mask = Mask(filter->GetOutput());
-    long found = 0, right = 0;
-    for (vtkIdType i = 0; truth && i < cloud->GetNumberOfPoints(); ++i)
+    vtkDataArray* sigma = cloud->GetFieldData()->GetArray("NoiseSigma");
+    vtkDataArray* spacing = cloud->GetFieldData()->GetArray("CleanMeanSpacing");
+    vtkDataArray* distance = cloud->GetPointData()->GetArray("FeatureDistance");
+    FP_CHECK(sigma && spacing && distance, "3 s plate: no NoiseSigma, CleanMeanSpacing or FeatureDistance");
+    if (sigma && spacing && distance)
     {
-      if (mask->GetValue(i))
+      const double trueRatio = sigma->GetTuple1(0) / filter->GetMeanSpacing();
+      const double s = spacing->GetTuple1(0);
+      vtkUnsignedCharArray* mask = Mask(filter->GetOutput());
+      long found = 0, right = 0;
+      for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i)
       {
-        ++found;
-        right += truth->GetTuple1(i) != 0.0;
+        if (mask->GetValue(i))
+        {
+          ++found;
+          right += distance->GetTuple1(i) <= 4.0 * s;
+        }
       }
+      const double precision = found ? static_cast<double>(right) / found : 0.0;
+      std::printf("%-18s sigma/d %.3f (true %.3f), %ld detections, precision %.3f\n", "3 s plate",
+        ratio, trueRatio, found, precision);
+      FP_CHECK(std::abs(ratio / trueRatio - 1.0) < 0.15, "3 s plate: sigma / d = %.3f, true %.3f",
+        ratio, trueRatio);
+      FP_CHECK(found > 1500 && precision >= 0.97, "3 s plate: %ld detections, precision %.3f",
+        found, precision);
     }
-    const double precision = found ? static_cast<double>(right) / found : 0.0;
-    std::printf("%-18s sigma/d %.3f, %ld detections, precision %.3f\n", "3 s plate", ratio, found,
-      precision);
-    FP_CHECK(truth != nullptr, "3 s plate: no GroundTruth array");
-    FP_CHECK(ratio > 0.15 && ratio < 0.8, "3 s plate: sigma / d = %.3f", ratio);
-    FP_CHECK(found > 1000 && precision >= 0.95, "3 s plate: %ld detections, precision %.3f", found,
-      precision);
   }
 
   // Bad input.
