@@ -98,10 +98,10 @@ constexpr int CubicPointsPerTerm = 10;
 // pure Gaussian noise puts its planes 2.7 RMS apart.
 const double SheetCosine = std::cos(10.0 * 3.14159265358979323846 / 180.0);
 constexpr double SheetSeparation = 4.0;
-// The noise figure's trimmed median: the rows at most the NoiseTrimShare point of the pure-noise
-// law (chi-square over its degrees of freedom) scaled to the current estimate; their median is
-// that law's quantile at half the share (the standard normal's quantiles at both shares, for
-// Wilson and Hilferty's approximation).
+// The noise figure's trimmed median (TrimmedMedian): the rows at most the 95 % point of the
+// pure-noise law (chi-square over its degrees of freedom) scaled to the current estimate; their
+// median is that law's 47.5 % point. The standard normal's quantiles at both shares, for Wilson
+// and Hilferty's approximation (ChiSquareShare).
 constexpr double NoiseTrimZ = 1.6448536;      // 0.95
 constexpr double NoiseTrimHalfZ = -0.0627068; // 0.475
 constexpr int NoiseTrimRounds = 100;
