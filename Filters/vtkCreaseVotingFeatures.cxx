@@ -666,11 +666,11 @@ bool TwoSheets(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& n,
 // Whether p holds the two sides of a wall that SplitHeights() separates but TwoSheets() does
 // not take: the far side a few points off to one side of the fitted point (p[0]), as where the
 // wall is about as thick as the links reach and the smaller scales gather a few of its points.
-// Two rounds of heights (the first `label`, from n; the second across the plane of the point's
-// group, which the far side's points tilt in the first), more than SheetSplitSigmas apart for
-// their spread, and each group's plane within 10 degrees of the other's and more than
-// SheetSeparation times their residual's RMS from it (as FitCrease() tells two sheets from a
-// crease). `sheets` gets the second round's groups.
+// Two rounds of heights (the first `label`, across the plane of all; the second across the
+// plane of the point's group, which the far side's points tilt in the first), more than
+// SheetSplitSigmas apart for their spread, and each group's plane within 10 degrees of the
+// other's and more than SheetSeparation times their residual's RMS from it (as FitCrease()
+// tells two sheets from a crease). `sheets` gets the second round's groups.
 bool ParallelSheets(const std::vector<Eigen::Vector3d>& p, const std::vector<unsigned char>& label,
   std::vector<unsigned char>& sheets)
 {
@@ -1827,7 +1827,8 @@ double CreaseRun::TrimmedMedian(
   double estimate = this->RowQuantile(scratch, 0.5);
   const double upper = ChiSquareShare(dof, NoiseTrimZ) / ChiSquareShare(dof, 0.0);
   const double back = ChiSquareShare(dof, 0.0) / ChiSquareShare(dof, NoiseTrimHalfZ);
-  for (int round = 0; round < NoiseTrimRounds && estimate > 0.0; ++round)
+  for (int round = 0; round < NoiseTrimRounds && estimate > 0.0 && std::isfinite(estimate);
+       ++round)
   {
     scratch.resize(residual.size()); // RowQuantile() drops the rows without a figure
     const double cut = upper * estimate;
