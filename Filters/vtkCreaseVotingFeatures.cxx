@@ -663,14 +663,30 @@ bool TwoSheets(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& n,
   return offset.squaredNorm() < SheetOverlap * SheetOverlap * spread;
 }
 
+// Whether planes a (ca, na) and b (cb, nb) are two sheets, not a crease: within 10 degrees of
+// parallel and more than SheetSeparation times `rms` apart at the origin (the fitted point);
+// `nearer` gets the one the origin lies nearer to.
+bool ParallelApart(const Eigen::Vector3d& ca, const Eigen::Vector3d& na, const Eigen::Vector3d& cb,
+  const Eigen::Vector3d& nb, double rms, int& nearer)
+{
+  if (!(std::abs(na.dot(nb)) > SheetCosine))
+  {
+    return false;
+  }
+  // Signed offsets of the fitted point (the origin) from the planes, both normals one way.
+  const double sa = -ca.dot(na), sb = -cb.dot(na.dot(nb) < 0.0 ? -nb : nb);
+  nearer = std::abs(sa) <= std::abs(sb) ? 0 : 1;
+  return std::abs(sa - sb) > SheetSeparation * rms;
+}
+
 // Whether p holds the two sides of a wall that SplitHeights() separates but TwoSheets() does
 // not take: the far side a few points off to one side of the fitted point (p[0]), as where the
 // wall is about as thick as the links reach and the smaller scales gather a few of its points.
 // Two rounds of heights (the first `label`, across the plane of all; the second across the
 // plane of the point's group, which the far side's points tilt in the first), more than
-// SheetSplitSigmas apart for their spread, and each group's plane within 10 degrees of the
-// other's and more than SheetSeparation times their residual's RMS from it (as FitCrease()
-// tells two sheets from a crease). `sheets` gets the second round's groups.
+// SheetSplitSigmas apart for their spread, and the groups' planes ParallelApart() at their
+// residual's RMS (as FitCrease() tells two sheets from a crease). `sheets` gets the second
+// round's groups.
 bool ParallelSheets(const std::vector<Eigen::Vector3d>& p, const std::vector<unsigned char>& label,
   std::vector<unsigned char>& sheets)
 {
@@ -696,14 +712,9 @@ bool ParallelSheets(const std::vector<Eigen::Vector3d>& p, const std::vector<uns
   }
   Eigen::Vector3d ca, na, cb, nb;
   double ra = 0.0, rb = 0.0;
-  if (!FitPlane(group[0], ca, na, ra) || !FitPlane(group[1], cb, nb, rb) ||
-    !(std::abs(na.dot(nb)) > SheetCosine))
-  {
-    return false;
-  }
-  const double rms = std::sqrt((ra + rb) / static_cast<double>(p.size()));
-  const double sa = -ca.dot(na), sb = -cb.dot(na.dot(nb) < 0.0 ? -nb : nb);
-  return std::abs(sa - sb) > SheetSeparation * rms;
+  int nearer = 0;
+  return FitPlane(group[0], ca, na, ra) && FitPlane(group[1], cb, nb, rb) &&
+    ParallelApart(ca, na, cb, nb, std::sqrt((ra + rb) / static_cast<double>(p.size())), nearer);
 }
 
 // The least-squares plane of all the points p (FitPlane); false with fewer than 8.
@@ -833,15 +844,10 @@ CreaseFit FitCrease(const std::vector<Eigen::Vector3d>& p, const std::vector<Eig
   }
   // Two parallel sheets a few noise widths apart, the fitted point on one of them: both sides
   // of a thin wall are in the neighbourhood. The caller fits the point's sheet alone.
-  if (std::abs(na.dot(nb)) > SheetCosine)
+  int nearer = 0;
+  if (ParallelApart(ca, na, cb, nb, std::sqrt(rss2 / static_cast<double>(m)), nearer))
   {
-    const double rms = std::sqrt(rss2 / static_cast<double>(m));
-    // Signed offsets of the fitted point (the origin) from the planes, both normals one way.
-    const double sa = -ca.dot(na), sb = -cb.dot(na.dot(nb) < 0.0 ? -nb : nb);
-    if (std::abs(sa - sb) > SheetSeparation * rms)
-    {
-      fit.Sheet = std::abs(sa) <= std::abs(sb) ? 0 : 1;
-    }
+    fit.Sheet = nearer;
   }
   Eigen::Vector3d t, x;
   double sine = 0.0;
