@@ -422,8 +422,8 @@ public:
   void RemoveSpurs();
   // Free branches and pieces made of points nobody voted for.
   void RemoveUnsupported();
-  // Straight pieces on their own, off the borders, across which the cloud does not bend (stray
-  // feature points on a smooth face).
+  // Straight or short pieces on their own, off the borders, across which the cloud does not bend
+  // (stray feature points on a smooth face).
   void RemoveFlatPieces();
   // Gaps in the feature points along a crease: two free ends that point at each other are
   // bridged where the cloud's cross-section shows the crease at every step between them.
@@ -1189,7 +1189,9 @@ void CurveRun::RemoveFlatPieces()
       continue;
     }
     // A straight piece on its own or a straight branch from a junction (every vertex within one
-    // spacing of its chord), on a crease.
+    // spacing of its chord), on a crease; or one no longer along its path than the slab across
+    // its chord (2 FitRadius), whatever its wiggle: the slab holds it whole (a spur of a clump
+    // of stray points on a smooth face, 4.6 s between its ends).
     const V3 a = this->G.Vertices[first];
     const V3 chord = this->G.Vertices[last] - a;
     const double length = chord.norm();
@@ -1207,6 +1209,12 @@ void CurveRun::RemoveFlatPieces()
       this->TraceSearch.Within(this->G.Vertices[v], CollisionRadius * this->S, ids);
       near.insert(ids.begin(), ids.end());
     }
+    double path = 0.0;
+    for (size_t k = 1; k < chain.Ids.size(); ++k)
+    {
+      path += (this->G.Vertices[chain.Ids[k]] - this->G.Vertices[chain.Ids[k - 1]]).norm();
+    }
+    straight = straight || path <= 2.0 * this->R; // short: the slab below covers it
     if (!straight || this->MostlyBorder(std::vector<vtkIdType>(near.begin(), near.end())))
     {
       continue;

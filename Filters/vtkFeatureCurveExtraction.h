@@ -71,7 +71,8 @@
  *    one side of the line in their tangent plane (the same side throughout), none beyond it by
  *    more than FitRadius s. Where the sampling recedes from an edge the detector finds no border
  *    point; the cloud still ends there. Conversely, a straight piece on its own or a straight branch
- *    (one end free or both, every vertex within 1 s of its chord, not on a border) is removed
+ *    (one end free or both, every vertex within 1 s of its chord, or at most 2 FitRadius s long
+ *    along its path, whatever its wiggle; not on a border) is removed
  *    where the cloud does not
  *    bend across it: the two faces hinged on it differ by less than a crease's angle or 3
  *    standard errors, or one quadratic face explains the cross-section as well (the two faces
