@@ -16,6 +16,7 @@
 // features denser and the plate 1 s thick held to the targets; the program fails when quality is
 // lost.
 #include "FeaturePointsBenchmarkFigures.h"
+#include "FeaturePointsBenchmarkLines.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -78,81 +79,6 @@ Region ScoredRegion(int model, double size, double s)
   return r;
 }
 
-// Points every `step` along each polyline of `lines`, with the index of their polyline.
-void SampleLines(vtkPolyData* lines, double step, std::vector<std::array<double, 3>>& samples,
-  std::vector<int>& owner)
-{
-  vtkCellArray* cells = lines->GetLines();
-  vtkNew<vtkIdList> ids;
-  int cell = 0;
-  for (cells->InitTraversal(); cells->GetNextCell(ids); ++cell)
-  {
-    for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds() || (k == 0 && ids->GetNumberOfIds() == 1);
-         ++k)
-    {
-      double a[3], b[3];
-      lines->GetPoint(ids->GetId(k), a);
-      lines->GetPoint(ids->GetId(std::min(k + 1, ids->GetNumberOfIds() - 1)), b);
-      const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-      const int n = std::max(1, static_cast<int>(std::ceil(length / step)));
-      for (int j = 0; j < n; ++j)
-      {
-        const double t = static_cast<double>(j) / n;
-        samples.push_back({ a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]),
-          a[2] + t * (b[2] - a[2]) });
-        owner.push_back(cell);
-      }
-    }
-    if (ids->GetNumberOfIds() > 0)
-    {
-      double x[3];
-      lines->GetPoint(ids->GetId(ids->GetNumberOfIds() - 1), x);
-      samples.push_back({ x[0], x[1], x[2] });
-      owner.push_back(cell);
-    }
-  }
-}
-
-class Nearest
-{
-public:
-  explicit Nearest(const std::vector<std::array<double, 3>>& samples)
-  {
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    for (const auto& x : samples)
-    {
-      points->InsertNextPoint(x.data());
-    }
-    this->Data->SetPoints(points);
-    this->Count = samples.size();
-    if (this->Count)
-    {
-      this->Locator->SetDataSet(this->Data);
-      this->Locator->BuildLocator();
-    }
-  }
-  double Distance(const std::array<double, 3>& x) const
-  {
-    if (!this->Count)
-    {
-      return VTK_DOUBLE_MAX;
-    }
-    double y[3];
-    this->Data->GetPoint(this->Locator->FindClosestPoint(x.data()), y);
-    return std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), y));
-  }
-  vtkIdType Closest(const std::array<double, 3>& x) const
-  {
-    return this->Count ? this->Locator->FindClosestPoint(x.data()) : -1;
-  }
-
-private:
-  size_t Count = 0;
-  vtkNew<vtkPolyData> Data;
-  vtkNew<vtkStaticPointLocator> Locator;
-};
-
 struct Scores
 {
   double Precision = 0, Recall = 0, F1 = 0, PerCurve = 0, MeanDistance = 0;
@@ -177,7 +103,7 @@ void CreasePointDistances(vtkPolyData* features, vtkPolyData* truth, const Regio
   std::vector<std::array<double, 3>> t;
   std::vector<int> owner;
   SampleLines(truth, s / 16.0, t, owner);
-  const Nearest toTruth(t);
+  const NearestSample toTruth(t);
   std::vector<double> found, moved;
   for (vtkIdType i = 0; i < features->GetNumberOfPoints(); ++i)
   {
@@ -219,7 +145,7 @@ Scores Evaluate(vtkPolyData* found, vtkPolyData* truth, const Region& region, do
   std::vector<int> fOwner, tOwner;
   SampleLines(found, step, f, fOwner);
   SampleLines(truth, step, t, tOwner);
-  const Nearest toTruth(t), toFound(f);
+  const NearestSample toTruth(t), toFound(f);
   Scores r;
   std::vector<unsigned char> polylineIn(found->GetNumberOfCells(), 0), curveIn(truth->GetNumberOfCells(), 0);
   double scored = 0, near = 0, distance = 0;
