@@ -21,7 +21,9 @@
 #include "vtkFieldData.h"
 #include "vtkLogger.h"
 #include "vtkLookupTable.h"
+#include "vtkIdList.h"
 #include "vtkMath.h"
+#include "vtkStaticPointLocator.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
@@ -1400,6 +1402,47 @@ bool FirstNonFinite(vtkDataArray* array, vtkIdType& i, int& c, double& v)
   return false;
 }
 
+// The distance from point i of `result` to its nearest other position, over the cloud's
+// bounding-box diagonal (-1 when unknown): tiny where the cloud's spacings shrink far below any
+// measurement's precision (a fuzzer's geometric spacings, 1 down to 1e-300), where densities and
+// curvatures leave the range of the output arrays; a far point gives an ordinary ratio.
+double NearestOverDiagonal(vtkPolyData* result, vtkIdType i)
+{
+  if (i < 0 || i >= result->GetNumberOfPoints() || result->GetNumberOfPoints() < 2)
+  {
+    return -1.0;
+  }
+  const double diagonal = result->GetLength();
+  if (!(diagonal > 0.0) || !std::isfinite(diagonal))
+  {
+    return -1.0;
+  }
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(result);
+  locator->BuildLocator();
+  double x[3], y[3];
+  result->GetPoint(i, x);
+  vtkNew<vtkIdList> nearest;
+  locator->FindClosestNPoints(8, x, nearest);
+  double closest = -1.0;
+  for (vtkIdType j = 0; j < nearest->GetNumberOfIds(); ++j)
+  {
+    result->GetPoint(nearest->GetId(j), y);
+    if (x[0] == y[0] && x[1] == y[1] && x[2] == y[2])
+    {
+      continue; // the point itself, or a copy
+    }
+    // Component by component: a squared distance may underflow to 0.
+    double d = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      d = std::max(d, std::abs(x[c] - y[c]));
+    }
+    closest = closest < 0.0 ? d : std::min(closest, d);
+  }
+  return closest < 0.0 ? -1.0 : closest / diagonal;
+}
+
 // The first computed value that is NaN or infinite, as a message ("" when there is none): such a
 // value is never written.
 std::string FindNonFinite(vtkPolyData* result, vtkPointSet* cloud)
@@ -1426,8 +1469,19 @@ std::string FindNonFinite(vtkPolyData* result, vtkPointSet* cloud)
       std::ostringstream m;
       m << "the method computed " << v << " for array '" << array->GetName() << "' at point "
         << i << " (counting from 0) at (" << x[0] << ", " << x[1] << ", " << x[2]
-        << "): the cloud's coordinates are beyond what it can compute with (a point far from the "
-        << "rest: remove it)";
+        << "): the cloud's coordinates are beyond what it can compute with ";
+      // Closer than a millionth of a float's precision across the cloud: no scan measures that.
+      const double ratio = NearestOverDiagonal(result, i);
+      if (ratio >= 0.0 && ratio < 1e-13)
+      {
+        m << "(its nearest other point lies " << ratio
+          << " of the cloud's size away, far below any measurement's precision: merge such "
+          << "points or drop them)";
+      }
+      else
+      {
+        m << "(a point far from the rest: remove it)";
+      }
       return m.str();
     }
   }

@@ -740,6 +740,26 @@ void FarOutliers()
   Check(t == a, "a cube 1e-60 wide and a point at 1e260: " + std::to_string(t) +
       " feature points, the cube alone " + std::to_string(a));
   ::unlink(Path("tiny-far.csv").c_str());
+
+  // Spacings shrinking geometrically from 1 to 1e-300 (found by fuzzing): the paper's method's
+  // PDI and Wang & Yuan's density leave the range of their arrays. The message names the cause,
+  // points closer than any precision, not (as before) a point far from the rest.
+  std::ostringstream shrinking;
+  shrinking.precision(17);
+  const int count = 2000;
+  for (int i = 0; i < count; ++i)
+  {
+    const double e = std::exp(-700.0 * i / (count - 1));
+    const double u = std::fmod(i * 0.6180339887, 1.0), v = std::fmod(i * 0.4142135623, 1.0);
+    shrinking << e << " " << e * u << " " << e * v << "\n";
+  }
+  Spit(Path("shrinking.xyz"), shrinking.str());
+  for (const char* method : { "huang2023", "wang-yuan" })
+  {
+    ExpectFailure(std::string("spacings shrinking to 1e-300, ") + method,
+      { Path("shrinking.xyz"), Path("o.vtp"), "--method", method, "--quiet" }, 1,
+      "far below any measurement's precision");
+  }
 }
 
 void ScatteredFeatureCurves()
