@@ -19,11 +19,10 @@
 #include "vtkFeatureCurveExtraction.h"
 #include "vtkFeaturePointExtraction.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkLogger.h"
 #include "vtkLookupTable.h"
-#include "vtkIdList.h"
 #include "vtkMath.h"
-#include "vtkStaticPointLocator.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
@@ -41,6 +40,7 @@
 #include "vtkSMPTools.h"
 #include "vtkScalarBarActor.h"
 #include "vtkSmoothShrinkIndexFeatures.h"
+#include "vtkStaticPointLocator.h"
 #include "vtkSurfaceVariationFeatures.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
@@ -1402,8 +1402,9 @@ bool FirstNonFinite(vtkDataArray* array, vtkIdType& i, int& c, double& v)
   return false;
 }
 
-// The distance from point i of `result` to its nearest other position, over the cloud's
-// bounding-box diagonal (-1 when unknown): tiny where the cloud's spacings shrink far below any
+// The largest coordinate difference from point i of `result` to the nearest of its 8 nearest
+// other positions (a distance within a factor sqrt(3)), over the cloud's bounding-box diagonal
+// (-1 when unknown): tiny where the cloud's spacings shrink far below any
 // measurement's precision (a fuzzer's geometric spacings, 1 down to 1e-300), where densities and
 // curvatures leave the range of the output arrays; a far point gives an ordinary ratio.
 double NearestOverDiagonal(vtkPolyData* result, vtkIdType i)
@@ -1432,7 +1433,8 @@ double NearestOverDiagonal(vtkPolyData* result, vtkIdType i)
     {
       continue; // the point itself, or a copy
     }
-    // Component by component: a squared distance may underflow to 0.
+    // Component by component: a squared distance may underflow to 0 (which also leaves the
+    // locator's order among such points arbitrary; any of them is as close).
     double d = 0.0;
     for (int c = 0; c < 3; ++c)
     {
