@@ -33,6 +33,22 @@ namespace
 // the grid 0.29 + 0.38 s, the tree 0.07 + 0.61 s; at 25,000 the grid 2.26 + 1.44 s, the tree
 // 0.08 + 0.64 s; an even cloud has 5 to 60 (the grid then 0.04 + 0.2 s, the tree 0.06 + 0.5 s).
 constexpr double TreeOccupancy = 3000.0;
+
+// The position a point's site is keyed by: its coordinates rounded down to multiples of 2^-540
+// (about 2.8e-163). Two points with the same key differ by less than that in every coordinate,
+// so their squared distance underflows to exactly 0: to every query they are as coincident as
+// copies, and grouped as copies are (without it, points packed closer than that, as a cloud whose
+// spacings shrink to 1e-300, tie at distance 0 with each other and every query reads them all).
+// From 2^-488 on, every double already is such a multiple (its last bit is worth 2^-540 or
+// more): the key is the coordinate itself.
+// The absolute part of the tree's widened bound (see TreeNearest).
+constexpr double TreeSlack = 64 * std::numeric_limits<double>::denorm_min();
+
+double SiteKey(double x)
+{
+  constexpr double quantum = 0x1p-540;
+  return std::fabs(x) < 0x1p-488 ? std::floor(x / quantum) * quantum : x;
+}
 }
 
 struct vtkPointCloudGridLocator::SearchGrid
@@ -158,14 +174,20 @@ struct vtkPointCloudGridLocator::SearchGrid
 struct vtkPointCloudGridLocator::SearchGrid::SlotTree
 {
   // The slots' coordinates as nanoflann reads them: through the grid, whose coordinate array
-  // ReorderSpatially() may move.
+  // ReorderSpatially() may move. Where some points coincide, the tree holds the sites instead
+  // (one entry per position), so that a stack of copies is offered once, as the grid reads it.
   struct Slots
   {
     const SearchGrid* Grid;
-    size_t kdtree_get_point_count() const { return this->Grid->SortedIds.size(); }
-    double kdtree_get_pt(uint32_t slot, size_t a) const
+    size_t kdtree_get_point_count() const
     {
-      return this->Grid->SortedPoints[3 * static_cast<size_t>(slot) + a];
+      return this->Grid->HasDuplicates ? this->Grid->SitePoints.size() / 3
+                                       : this->Grid->SortedIds.size();
+    }
+    double kdtree_get_pt(uint32_t entry, size_t a) const
+    {
+      return this->Grid->HasDuplicates ? this->Grid->SitePoints[3 * static_cast<size_t>(entry) + a]
+                                       : this->Grid->SortedPoints[3 * static_cast<size_t>(entry) + a];
     }
     template <class Box>
     bool kdtree_get_bbox(Box&) const
@@ -319,7 +341,10 @@ struct GridQuery
   // The tree's queries (Grid->Tree set), with the grid's answers: nanoflann offers the slots
   // and these sets keep the best by (distance, id), the distance computed as the grid computes
   // it. The bound they give nanoflann is widened by a relative 1e-9 so that points at exactly
-  // the k-th distance are offered too (nanoflann takes only those strictly nearer).
+  // the k-th distance are offered too (nanoflann takes only those strictly nearer), and by 64
+  // of the smallest subnormals where the relative part underflows (a k-th distance of 0 or
+  // subnormal). Not by the smallest normal double: with a k-th distance of 0, that let in every
+  // node within 1.5e-154 of the query, a whole cloud's worth where its spacings shrink to 1e-300.
   struct TreeNearest
   {
     const vtkPointCloudGridLocator::SearchGrid& G;
@@ -337,16 +362,39 @@ struct GridQuery
         return std::numeric_limits<double>::infinity();
       }
       const double w = this->Heap.front().D2;
-      return w + w * 1e-9 + std::numeric_limits<double>::min();
+      return w + w * 1e-9 + TreeSlack;
     }
-    bool addPoint(double, uint32_t slot)
+    bool addPoint(double, uint32_t entry)
     {
-      const double* y = this->G.SortedPoints + 3 * static_cast<size_t>(slot);
+      if (!this->G.HasDuplicates)
+      {
+        this->Offer(this->G.SortedPoints + 3 * static_cast<size_t>(entry), this->G.SortedIds[entry]);
+        return true;
+      }
+      // A site: its points share their distance and come in ascending ids, so once one is not
+      // kept none of the next ones is (as the grid's scan of a site).
+      const double* y = this->G.SitePoints.data() + 3 * static_cast<size_t>(entry);
+      for (int32_t m = this->G.MemberStart[entry]; m < this->G.MemberStart[entry + 1]; ++m)
+      {
+        if (!this->Offer(y, this->G.SortedIds[this->G.Members[m]]))
+        {
+          break;
+        }
+      }
+      return true;
+    }
+    // Offers point `id` at y; false when neither it nor a point of larger id at y can be kept.
+    bool Offer(const double* y, int32_t id)
+    {
       const double dx = this->X[0] - y[0], dy = this->X[1] - y[1], dz = this->X[2] - y[2];
-      const Candidate c{ dx * dx + dy * dy + dz * dz, this->G.SortedIds[slot] };
-      if (c.Id == this->Skip || (this->Distinct && c.D2 == 0.0))
+      const Candidate c{ dx * dx + dy * dy + dz * dz, id };
+      if (c.Id == this->Skip)
       {
         return true;
+      }
+      if (this->Distinct && c.D2 == 0.0)
+      {
+        return false;
       }
       if (this->Heap.size() < this->K)
       {
@@ -359,6 +407,10 @@ struct GridQuery
         this->Heap.back() = c;
         std::push_heap(this->Heap.begin(), this->Heap.end());
       }
+      else
+      {
+        return false;
+      }
       return true;
     }
   };
@@ -370,15 +422,26 @@ struct GridQuery
     std::vector<Candidate>& Found;
 
     bool full() const { return true; }
-    double worstDist() const { return this->R2 + this->R2 * 1e-9 + std::numeric_limits<double>::min(); }
-    bool addPoint(double, uint32_t slot)
+    double worstDist() const { return this->R2 + this->R2 * 1e-9 + TreeSlack; }
+    bool addPoint(double, uint32_t entry)
     {
-      const double* y = this->G.SortedPoints + 3 * static_cast<size_t>(slot);
+      const bool site = this->G.HasDuplicates;
+      const double* y = (site ? this->G.SitePoints.data() : this->G.SortedPoints) +
+        3 * static_cast<size_t>(entry);
       const double dx = this->X[0] - y[0], dy = this->X[1] - y[1], dz = this->X[2] - y[2];
       const double d2 = dx * dx + dy * dy + dz * dz;
-      if (d2 <= this->R2)
+      if (d2 > this->R2)
       {
-        this->Found.push_back(Candidate{ d2, this->G.SortedIds[slot] });
+        return true;
+      }
+      if (!site)
+      {
+        this->Found.push_back(Candidate{ d2, this->G.SortedIds[entry] });
+        return true;
+      }
+      for (int32_t m = this->G.MemberStart[entry]; m < this->G.MemberStart[entry + 1]; ++m)
+      {
+        this->Found.push_back(Candidate{ d2, this->G.SortedIds[this->G.Members[m]] });
       }
       return true;
     }
@@ -1192,15 +1255,25 @@ void vtkPointCloudGridLocator::BuildSites()
   SearchGrid& g = *this->Grid;
   const vtkIdType numberOfCells = static_cast<vtkIdType>(g.CellStart.size()) - 1;
   const double* p = g.SortedPoints;
+  // Slots by their sites' keys (SiteKey()), then ascending.
   auto byPosition = [p](int32_t a, int32_t b) {
     const double* x = p + 3 * static_cast<size_t>(a);
     const double* y = p + 3 * static_cast<size_t>(b);
-    return x[0] != y[0] ? x[0] < y[0] : x[1] != y[1] ? x[1] < y[1] : x[2] != y[2] ? x[2] < y[2] : a < b;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double kx = SiteKey(x[c]), ky = SiteKey(y[c]);
+      if (kx != ky)
+      {
+        return kx < ky;
+      }
+    }
+    return a < b;
   };
   auto same = [p](int32_t a, int32_t b) {
     const double* x = p + 3 * static_cast<size_t>(a);
     const double* y = p + 3 * static_cast<size_t>(b);
-    return x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
+    return SiteKey(x[0]) == SiteKey(y[0]) && SiteKey(x[1]) == SiteKey(y[1]) &&
+      SiteKey(x[2]) == SiteKey(y[2]);
   };
   // Whether any cell holds two points at one position (most clouds: none, and the grid stays as
   // it is); cells are checked in parallel, each on its own.
