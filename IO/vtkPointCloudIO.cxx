@@ -949,6 +949,42 @@ bool CheckDeclaredSizes(const std::string& fileName, double fileSize, const std:
   return true;
 }
 
+// Each piece's counts (NumberOfPoints, NumberOfCells, NumberOfVerts, ...): VTK's reader takes a
+// count it cannot parse, or one beyond 64 bits, for a missing attribute ("Piece 0 is missing its
+// NumberOfPoints attribute"), and a negative one for an array too short. A count present must be
+// a whole number of 0 or more that fits in 63 bits.
+bool CheckPieceCounts(
+  const std::string& fileName, const std::string& head, size_t end, std::string& error)
+{
+  static const char* const counts[] = { "NumberOfPoints", "NumberOfCells", "NumberOfVerts",
+    "NumberOfLines", "NumberOfStrips", "NumberOfPolys" };
+  int index = 0;
+  for (size_t piece = head.find("<Piece"); piece < end; piece = head.find("<Piece", piece + 1))
+  {
+    const size_t tagEnd = head.find('>', piece);
+    if (tagEnd == std::string::npos || tagEnd > end)
+    {
+      break;
+    }
+    const std::string tag = head.substr(piece, tagEnd - piece);
+    for (const char* name : counts)
+    {
+      const std::string text = TagAttribute(tag, name);
+      uint64_t count = 0;
+      if (!text.empty() &&
+        (!ParseOffset(text, count) || count > static_cast<uint64_t>(VTK_ID_MAX)))
+      {
+        error = fileName + ": piece " + std::to_string(index) + " declares " + name + "=\"" +
+          vtkPointCloudIO::MessageText(text.substr(0, 40).c_str()) + (text.size() > 40 ? "..." : "") +
+          "\": not a whole number from 0 to 2^63 - 1 (a corrupt count)";
+        return false;
+      }
+    }
+    ++index;
+  }
+  return true;
+}
+
 // The value of a base64 digit (0-63); -1 for any other character ('=' included).
 int Base64Digit(char c)
 {
@@ -958,12 +994,12 @@ int Base64Digit(char c)
   return c != '\0' && d != std::string::npos ? static_cast<int>(d) : -1;
 }
 
-// Whether a block of `count` bytes for the DataArray tag at `tag` of `head` (its text: `array`)
-// holds as many points as its piece's NumberOfPoints, where it is the piece's Points array (VTK
-// reads that many and drops or leaves unread the rest, or fills the missing ones with zeros);
-// false, with `error`, where it does not.
+// Whether a block of `count` bytes (`ascii`: values) for the DataArray tag at `tag` of `head`
+// (its text: `array`) holds as many points as its piece's NumberOfPoints, where it is the piece's
+// Points array (VTK reads that many and drops or leaves unread the rest, or fills the missing
+// ones with zeros); false, with `error`, where it does not.
 bool PointsFitBlock(const std::string& fileName, const std::string& head, size_t tag,
-  const std::string& array, uint64_t count, std::string& error)
+  const std::string& array, uint64_t count, std::string& error, bool ascii = false)
 {
   const size_t piece = head.rfind("<Piece", tag);
   const size_t points = head.rfind("<Points", tag);
@@ -987,11 +1023,12 @@ bool PointsFitBlock(const std::string& fileName, const std::string& head, size_t
   {
     return true; // VTK's reader says what is wrong with those
   }
-  const uint64_t per = components * static_cast<uint64_t>(bytesPerValue);
+  const uint64_t per = components * static_cast<uint64_t>(ascii ? 1 : bytesPerValue);
   if (n > count / per || n * per != count)
   {
-    error = fileName + ": a piece declares NumberOfPoints=\"" + declared +
-      "\", but its Points array holds " + std::to_string(count) + " bytes, " +
+    error = fileName + ": a piece declares NumberOfPoints=\"" + declared + "\", but its " +
+      (ascii ? "ASCII " : "") + "Points array holds " + std::to_string(count) +
+      (ascii ? (count == 1 ? " value, " : " values, ") : " bytes, ") +
       (count % per == 0 ? std::to_string(count / per) + (count == per ? " point" : " points")
                         : std::string("not a whole number of points"));
     return false;
@@ -1346,6 +1383,35 @@ bool CheckInlineData(
   const bool bigEndian = TagAttribute(file, "byte_order") == "BigEndian";
   for (const auto& [tag, array] : DataArrayTags(head, end))
   {
+    if (TagAttribute(array, "format") == "ascii" && !array.empty() && array.back() != '/')
+    {
+      // An ASCII Points array: its values, the words up to the next tag (VTK reads the first
+      // NumberOfPoints points and says nothing of the rest).
+      const size_t open = head.find('>', tag) + 1;
+      const size_t close = head.find('<', open);
+      if (close == std::string::npos || close > end)
+      {
+        continue;
+      }
+      uint64_t values = 0;
+      for (size_t c = open; c < close;)
+      {
+        while (c < close && std::isspace(static_cast<unsigned char>(head[c])))
+        {
+          ++c;
+        }
+        values += c < close;
+        while (c < close && !std::isspace(static_cast<unsigned char>(head[c])))
+        {
+          ++c;
+        }
+      }
+      if (!PointsFitBlock(fileName, head, tag, array, values, error, true))
+      {
+        return false;
+      }
+      continue;
+    }
     if (TagAttribute(array, "format") != "binary" || (!array.empty() && array.back() == '/'))
     {
       continue;
@@ -1594,7 +1660,8 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::Read(
     std::ifstream in(fileName, std::ios::binary);
     std::string head;
     const size_t appended = ReadXMLHead(in, head);
-    if (!CheckDeclaredSizes(fileName, static_cast<double>(info.st_size), head, appended, error) ||
+    if (!CheckPieceCounts(fileName, head, appended, error) ||
+      !CheckDeclaredSizes(fileName, static_cast<double>(info.st_size), head, appended, error) ||
       !CheckAppendedData(fileName, static_cast<double>(info.st_size), error) ||
       !CheckInlineData(fileName, head, appended, error))
     {

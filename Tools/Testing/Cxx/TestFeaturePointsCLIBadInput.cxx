@@ -295,6 +295,30 @@ void HugeCounts()
       points + "\n</DataArray>\n</Points>\n</Piece>\n</PolyData>\n</VTKFile>\n");
   ExpectFailure("VTP declaring 2^32 components", { Path("components.vtp"), Path("o.vtp") }, 1,
     "components.vtp: an unnamed array declares NumberOfComponents=\"4294967296\" for 100 points");
+  // Counts VTK's reader misreads: one beyond 64 bits ("missing its NumberOfPoints attribute"), a
+  // negative one ("the data array ... may be too short"), and fewer points than the ASCII array
+  // holds (read silently, the rest dropped).
+  auto piece = [&points](const std::string& count) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+           "byte_order=\"LittleEndian\">\n<PolyData>\n<Piece NumberOfPoints=\"" +
+      count +
+      "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+      "<Points>\n<DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">\n" +
+      points + "\n</DataArray>\n</Points>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  };
+  Spit(Path("overflow.vtp"), piece("99999999999999999999"));
+  ExpectFailure("VTP declaring 10^20 points", { Path("overflow.vtp"), Path("o.vtp") }, 1,
+    "overflow.vtp: piece 0 declares NumberOfPoints=\"99999999999999999999\": not a whole number "
+    "from 0 to 2^63 - 1");
+  Spit(Path("negative.vtp"), piece("-3"));
+  ExpectFailure("VTP declaring -3 points", { Path("negative.vtp"), Path("o.vtp") }, 1,
+    "negative.vtp: piece 0 declares NumberOfPoints=\"-3\"");
+  Spit(Path("fewer.vtp"), piece("60"));
+  ExpectFailure("ASCII VTP declaring fewer points than it holds", { Path("fewer.vtp"),
+    Path("o.vtp") }, 1, "fewer.vtp: a piece declares NumberOfPoints=\"60\", but its ASCII Points "
+                        "array holds 300 values, 100 points");
+  Spit(Path("exact.vtp"), piece(" 100 "));
+  ExpectSuccess("ASCII VTP declaring \" 100 \" points", { Path("exact.vtp"), Path("o.vtp"), "--quiet" });
   Spit(Path("huge.vtk"),
     "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 1000000000000 float\n0 0 0 "
     "1 0 0 0 1 0\n");
