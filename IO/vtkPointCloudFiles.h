@@ -1,6 +1,6 @@
 // What the PLY, PCD and LAS readers and writers share: the host's byte order, loads of file
-// values in either byte order, and the checks and opening of a file to read. Private to
-// FeaturePoints::IO (not installed).
+// values in either byte order, quoting a file's text in messages, and the checks and opening of
+// a file to read. Private to FeaturePoints::IO (not installed).
 #ifndef vtkPointCloudFiles_h
 #define vtkPointCloudFiles_h
 
@@ -17,9 +17,22 @@
 #include <cstring>
 #include <set>
 #include <string>
+#include <string_view>
 
 namespace featurepoints
 {
+// Text of a file in a message: quoted, at most 64 characters, control and other non-ASCII
+// bytes shown as '?' (a header's raw bytes are never echoed to a terminal).
+inline std::string Quote(std::string_view text)
+{
+  std::string shown(text.substr(0, 64));
+  for (char& c : shown)
+  {
+    c = (c >= 32 && c < 127) ? c : '?';
+  }
+  return "'" + shown + (text.size() > 64 ? "...'" : "'");
+}
+
 inline bool HostIsBigEndian()
 {
   const uint16_t one = 1;

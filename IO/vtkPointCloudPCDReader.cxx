@@ -79,17 +79,7 @@ void Split(std::string_view line, std::vector<std::string_view>& tokens)
   }
 }
 
-// Text of the file in a message: quoted, at most 64 characters, control and other non-ASCII
-// bytes shown as '?'.
-std::string Quote(std::string_view text)
-{
-  std::string shown(text.substr(0, 64));
-  for (char& c : shown)
-  {
-    c = (c >= 32 && c < 127) ? c : '?';
-  }
-  return "'" + shown + (text.size() > 64 ? "...'" : "'");
-}
+using featurepoints::Quote;
 
 bool ParseCount(std::string_view token, uint64_t& value)
 {

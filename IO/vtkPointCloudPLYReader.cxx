@@ -36,6 +36,7 @@
 vtkStandardNewMacro(vtkPointCloudPLYReader);
 
 using namespace featurepoints::ply;
+using featurepoints::Quote;
 
 namespace
 {
@@ -367,7 +368,7 @@ int64_t LoadCount(PlyType type, const char* p, bool swap)
 
 std::string ParseMessage(Parse result, std::string_view token, PlyType type)
 {
-  const std::string quoted = "'" + std::string(token) + "'";
+  const std::string quoted = Quote(token);
   switch (result)
   {
     case Parse::NotAnInteger:
@@ -464,7 +465,7 @@ bool PLYParser::ReadHeader()
     return this->Fail("not a PLY file (the first line is not \"ply\")");
   }
   auto bad = [this](const std::string& what) { return this->Fail(what, this->Line); };
-  auto quote = [](std::string_view s) { return "'" + std::string(s) + "'"; };
+  auto quote = [](std::string_view s) { return Quote(s); };
   Element* current = nullptr;
   for (;;)
   {
@@ -690,8 +691,8 @@ bool PLYParser::SkipElement(const Element& e)
       const int64_t n = LoadCount(p.CountType, count, swap);
       if (n < 0)
       {
-        return this->Fail("negative count " + std::to_string(n) + " of list '" + p.Name + "' in " +
-          e.Name + " " + std::to_string(r + 1));
+        return this->Fail("negative count " + std::to_string(n) + " of list " + Quote(p.Name) +
+          " in " + e.Name + " " + std::to_string(r + 1));
       }
       if (!this->In.Skip(static_cast<uint64_t>(n) * TypeSize(p.Type)))
       {
@@ -783,7 +784,8 @@ bool PLYParser::Prepare(const Element& vertex, vtkPolyData* output)
     if (props[i].IsList)
     {
       this->Warnings.push_back(
-        this->FileName + ": list property '" + props[i].Name + "' of the vertex element skipped");
+        this->FileName + ": list property " + Quote(props[i].Name) +
+        " of the vertex element skipped");
       continue;
     }
     // NAME_0, NAME_1, ... of one type, one after the other: the components of array NAME.
@@ -1036,8 +1038,8 @@ bool PLYParser::ReadBinaryVertices(const Element& vertex)
           const int64_t items = ok ? LoadCount(p.CountType, count, swap) : 0;
           if (items < 0)
           {
-            return this->Fail("negative count " + std::to_string(items) + " of list '" + p.Name +
-              "' in vertex " + std::to_string(v + 1));
+            return this->Fail("negative count " + std::to_string(items) + " of list " +
+              Quote(p.Name) + " in vertex " + std::to_string(v + 1));
           }
           ok = ok && this->In.Skip(static_cast<uint64_t>(items) * TypeSize(p.Type));
         }
@@ -1082,13 +1084,13 @@ bool PLYParser::ReadAsciiVertices(const Element& vertex)
       {
         const Property& p = vertex.Properties[i];
         auto missing = [&]() {
-          return this->Fail("too few values for " + which() + ": no value for property '" + p.Name +
-              "' (the line has " + std::to_string(this->Tokens.size()) + ")",
+          return this->Fail("too few values for " + which() + ": no value for property " +
+              Quote(p.Name) + " (the line has " + std::to_string(this->Tokens.size()) + ")",
             this->Line);
         };
         auto invalid = [&](Parse result, std::string_view token, PlyType type) {
           return this->Fail(
-            ParseMessage(result, token, type) + " in property '" + p.Name + "' of " + which(),
+            ParseMessage(result, token, type) + " in property " + Quote(p.Name) + " of " + which(),
             this->Line);
         };
         if (next >= this->Tokens.size())

@@ -577,6 +577,9 @@ void TestErrors()
     5);
   ExpectError(
     "unknown keyword", "keyword.ply", "ply\nformat ascii 1.0\nelemnt vertex 1\n", "elemnt", 3);
+  // A header's raw bytes are not echoed (a terminal would take them as control sequences).
+  ExpectError("unknown keyword with raw bytes", "raw.ply",
+    "ply\nformat ascii 1.0\nelem\xff\x1b[2Jnt vertex 1\n", "'elem??[2Jnt'", 3);
   ExpectError("no vertex element", "no_vertex.ply",
     "ply\nformat ascii 1.0\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n",
     "no vertex element");
