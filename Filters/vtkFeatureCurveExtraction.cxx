@@ -270,6 +270,101 @@ LineFit FitLine(const std::vector<V3>& points, const std::vector<vtkIdType>& ids
   return fit;
 }
 
+// Whether the listed points, whose line fit is `f`, lie on two lines side by side rather than
+// on one: across the line (along the direction in which their offsets from it spread most), the
+// best split into two groups (least squares, as 2-means) leaves each group of at least
+// `minimum` points, the gap between the groups' means is wider than 2 sqrt(3) times their
+// pooled spread (what splitting one band of any even width leaves), and each group has points
+// in every third of the span along the line. `gap`: the distance between the groups' means.
+bool TwoLinesSideBySide(const std::vector<V3>& points, const std::vector<vtkIdType>& ids,
+  const LineFit& f, int minimum, double& gap)
+{
+  const size_t m = ids.size();
+  if (m < static_cast<size_t>(2 * minimum))
+  {
+    return false;
+  }
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  std::vector<V3> across(m);
+  for (size_t k = 0; k < m; ++k)
+  {
+    const V3 r = points[ids[k]] - f.Centroid;
+    across[k] = r - r.dot(f.Direction) * f.Direction;
+    cov += across[k] * across[k].transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  const V3 e = solver.eigenvectors().col(2);
+  // (across, along) per point, by across.
+  std::vector<std::pair<double, double>> uv(m);
+  for (size_t k = 0; k < m; ++k)
+  {
+    uv[k] = { across[k].dot(e), (points[ids[k]] - f.Centroid).dot(f.Direction) };
+  }
+  std::sort(uv.begin(), uv.end());
+  std::vector<double> u(m);
+  for (size_t k = 0; k < m; ++k)
+  {
+    u[k] = uv[k].first;
+  }
+  std::vector<double> prefix(m + 1, 0.0), squares(m + 1, 0.0);
+  for (size_t k = 0; k < m; ++k)
+  {
+    prefix[k + 1] = prefix[k] + u[k];
+    squares[k + 1] = squares[k] + u[k] * u[k];
+  }
+  double best = std::numeric_limits<double>::infinity();
+  size_t split = 0;
+  for (size_t k = static_cast<size_t>(minimum); k + static_cast<size_t>(minimum) <= m; ++k)
+  {
+    const double a = static_cast<double>(k), b = static_cast<double>(m - k);
+    const double sa = prefix[k], sb = prefix[m] - prefix[k];
+    const double within = squares[m] - sa * sa / a - sb * sb / b;
+    if (within < best)
+    {
+      best = within;
+      split = k;
+    }
+  }
+  if (split == 0)
+  {
+    return false;
+  }
+  const double a = static_cast<double>(split), b = static_cast<double>(m - split);
+  gap = (prefix[m] - prefix[split]) / b - prefix[split] / a;
+  const double spread = std::sqrt(std::max(best, 0.0) / static_cast<double>(m));
+  if (!(gap > 2.0 * std::sqrt(3.0) * spread))
+  {
+    return false;
+  }
+  // Side by side, each group runs along the whole span: a point of each in every third of it.
+  // (A curved line splits too, across its chord: its middle from its two ends.)
+  double lo = uv[0].second, hi = lo;
+  for (const auto& p : uv)
+  {
+    lo = std::min(lo, p.second);
+    hi = std::max(hi, p.second);
+  }
+  const double third = (hi - lo) / 3.0;
+  if (!(third > 0.0))
+  {
+    return false;
+  }
+  int seen[2][3] = { { 0, 0, 0 }, { 0, 0, 0 } };
+  for (size_t k = 0; k < m; ++k)
+  {
+    const int part = std::min(2, static_cast<int>((uv[k].second - lo) / third));
+    seen[k < split ? 0 : 1][part] = 1;
+  }
+  for (const auto& group : seen)
+  {
+    if (!(group[0] && group[1] && group[2]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 V3 ProjectOnLine(const V3& x, const LineFit& f)
 {
   return f.Centroid + (x - f.Centroid).dot(f.Direction) * f.Direction;
@@ -458,9 +553,27 @@ public:
   std::vector<unsigned char> Supported; // per trace point: voted for, or on a border
   std::vector<double> Scores; // per feature point: the detector's score (KeepRidges)
   std::vector<V3> TracePoints;
-  // Per trace point, its position moved by the detector's CreaseOffset (crease points; NaN
-  // elsewhere and where the input has no offsets): where it is traced in a strip (KeepRidges).
+  // Per trace point, its position moved by the detector's CreaseOffset (crease points, and
+  // border points that carry one: a wall's rim; NaN elsewhere and where the input has no
+  // offsets): where it is traced in a strip (KeepRidges).
   std::vector<V3> TraceMoved;
+  // Per trace point (after KeepRidges): traced where it is moved to, in a strip of creases.
+  std::vector<unsigned char> InStrip;
+  // Half the median gap between lines of moved points side by side (0: none seen).
+  double StripHalfGap = 0.0;
+  // The fit `f` at a position x of a trace, on the trace points `ids`: where most of them lie in
+  // a strip of lines side by side, refitted (twice) on those within StripHalfGap of the line
+  // through x along the fit's direction (the trace's own line), `ids` cut to them; `own` tells
+  // whether it was.
+  LineFit OwnLine(const V3& x, const LineFit& f, std::vector<vtkIdType>& ids,
+    bool* own = nullptr) const;
+  // Per graph vertex of the traces: placed on its own line of a strip (OwnLine); the vertices
+  // added after the traces have none.
+  std::vector<unsigned char> StripVertex;
+  bool IsStripVertex(int v) const
+  {
+    return v >= 0 && static_cast<size_t>(v) < this->StripVertex.size() && this->StripVertex[v];
+  }
   // The crease points moved by the detector's CreaseOffset onto the line their voters agree on.
   std::vector<V3> Moved;
   PointSearch MovedSearch;
@@ -637,7 +750,7 @@ void CurveRun::SelectPoints(vtkPointSet* input, vtkDataArray* mask, vtkDataArray
     if (feature)
     {
       V3 moved = V3::Constant(std::numeric_limits<double>::quiet_NaN());
-      if (offsets && (type == CONVEX || type == CONCAVE))
+      if (offsets && (type == CONVEX || type == CONCAVE || type == BORDER))
       {
         V3 offset;
         offsets->GetTuple(i, offset.data());
@@ -699,6 +812,53 @@ vtkIdType CurveRun::FitCap(double radius) const
   return static_cast<vtkIdType>(std::min(std::ceil(FitCapDisks * disk), 1e7));
 }
 
+LineFit CurveRun::OwnLine(
+  const V3& x, const LineFit& f, std::vector<vtkIdType>& ids, bool* own) const
+{
+  if (own)
+  {
+    *own = false;
+  }
+  if (this->StripHalfGap <= 0.0 || f.Count < MinFitPoints || this->InStrip.empty())
+  {
+    return f;
+  }
+  size_t strip = 0;
+  for (vtkIdType i : ids)
+  {
+    strip += this->InStrip[i];
+  }
+  if (2 * strip <= ids.size())
+  {
+    return f;
+  }
+  LineFit line = f;
+  std::vector<vtkIdType> near;
+  for (int round = 0; round < 2; ++round)
+  {
+    near.clear();
+    for (vtkIdType i : ids)
+    {
+      const V3 r = this->TracePoints[i] - x;
+      if ((r - r.dot(line.Direction) * line.Direction).norm() <= this->StripHalfGap)
+      {
+        near.push_back(i);
+      }
+    }
+    if (static_cast<int>(near.size()) < MinFitPoints)
+    {
+      return f;
+    }
+    line = FitLine(this->TracePoints, near, x);
+  }
+  ids.swap(near);
+  if (own)
+  {
+    *own = true;
+  }
+  return line;
+}
+
 LineFit CurveRun::FitAt(const V3& x, std::vector<vtkIdType>& ids) const
 {
   this->TraceSearch.NearestWithin(x, this->R, this->FitCap(this->R), ids);
@@ -716,15 +876,20 @@ void CurveRun::KeepRidges()
   // points themselves do or not, the neighbourhood holds creases side by side: the crease points
   // within FitRadius of such a point are traced where they are moved to, every one of them (the
   // moved points of a strip lie on its creases, not between them). Where the moved points form
-  // one line, a strip is the wide band of one crease and keeps its ridges.
+  // one line, a strip is the wide band of one crease and keeps its ridges. Where they form two
+  // lines side by side (TwoLinesSideBySide, over 1.5 FitRadius, further apart than
+  // CollisionRadius, and so for a quarter of the trace points within FitRadius), the strip is
+  // traced on the moved points too, each trace on its own line (OwnLine).
   const vtkIdType n = static_cast<vtkIdType>(this->TracePoints.size());
-  std::vector<vtkIdType> ids, withMoved;
+  std::vector<vtkIdType> ids, withMoved, wide;
   std::vector<double> around;
   std::vector<unsigned char> ridge(n, 1), parallel(n, 0);
+  std::vector<double> gapOf(n, 0.0); // between the lines of moved points side by side
+  std::vector<unsigned char> twoLines(n, 0);
   for (vtkIdType i = 0; i < n; ++i)
   {
     const unsigned char type = this->Type[this->TraceIndex[i]];
-    if (type != CONVEX && type != CONCAVE)
+    if (type != CONVEX && type != CONCAVE && !(type == BORDER && this->TraceMoved[i].allFinite()))
     {
       continue;
     }
@@ -743,14 +908,40 @@ void CurveRun::KeepRidges()
     }
     const LineFit moved = FitLine(this->TraceMoved, withMoved, this->TracePoints[i]);
     const bool movedNoLine = moved.Count >= MinFitPoints && moved.Flatness > MaxFlatness;
+    // Moved points on two lines side by side closer than the fit radius (two creases a few
+    // spacings apart, a rim face between its two edges) make one line of the fit's width.
+    // Tested over the wider ball of the walk's second try (1.5 FitRadius): a line of moved
+    // points holds about one per spacing.
+    double gap = 0.0;
+    bool movedTwoLines = false;
+    if (moved.Count >= MinFitPoints && !movedNoLine)
+    {
+      this->TraceSearch.Within(this->TracePoints[i], 1.5 * this->R, wide);
+      wide.erase(std::remove_if(wide.begin(), wide.end(),
+                   [this](vtkIdType j) { return !this->TraceMoved[j].allFinite(); }),
+        wide.end());
+      const LineFit both = FitLine(this->TraceMoved, wide, this->TracePoints[i]);
+      // Lines closer than CollisionRadius could not be traced apart (a trace joins a vertex of
+      // another that close); the moved points of one crease split at any scale (a clean
+      // crease's by 1e-8 s).
+      movedTwoLines = both.Flatness <= MaxFlatness &&
+        TwoLinesSideBySide(this->TraceMoved, wide, both, MinFitPoints, gap) &&
+        gap > CollisionRadius * this->S;
+    }
     const bool noLine = f.Flatness > MaxFlatness;
     // The normals' test (the costliest) only where either answer depends on it.
     V3 c;
-    if ((!movedNoLine && !noLine) || !this->NormalsCrease(this->TracePoints[i], c))
+    if ((!movedNoLine && !movedTwoLines && !noLine) ||
+      !this->NormalsCrease(this->TracePoints[i], c))
     {
       continue;
     }
     parallel[i] = movedNoLine;
+    if (movedTwoLines)
+    {
+      twoLines[i] = 1;
+      gapOf[i] = gap;
+    }
     if (!noLine)
     {
       continue;
@@ -764,9 +955,34 @@ void CurveRun::KeepRidges()
         around.push_back(this->Scores[j]);
       }
     }
+    if (around.empty())
+    {
+      continue;
+    }
     const size_t middle = around.size() / 2;
     std::nth_element(around.begin(), around.begin() + middle, around.end());
     ridge[i] = !(this->Scores[i] < around[middle]);
+  }
+  // Lines side by side where MinFitPoints trace points within FitRadius (this one included) see
+  // them: a strip runs along its lines, a lone split is noise (at a junction, a cut end).
+  std::vector<double> gaps;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!twoLines[i])
+    {
+      continue;
+    }
+    this->TraceSearch.Within(this->TracePoints[i], this->R, ids);
+    int seen = 0;
+    for (vtkIdType j : ids)
+    {
+      seen += twoLines[j];
+    }
+    if (seen >= MinFitPoints && 4 * static_cast<size_t>(seen) >= ids.size())
+    {
+      parallel[i] = 1;
+      gaps.push_back(gapOf[i]);
+    }
   }
   // The crease points within FitRadius of a strip of parallel creases.
   std::vector<unsigned char> inStrip(n, 0);
@@ -783,7 +999,7 @@ void CurveRun::KeepRidges()
   }
   std::vector<V3> points;
   std::vector<vtkIdType> index;
-  std::vector<unsigned char> supported;
+  std::vector<unsigned char> supported, strip;
   for (vtkIdType i = 0; i < n; ++i)
   {
     if (!inStrip[i] && !ridge[i])
@@ -793,10 +1009,15 @@ void CurveRun::KeepRidges()
     points.push_back(inStrip[i] ? this->TraceMoved[i] : this->TracePoints[i]);
     index.push_back(this->TraceIndex[i]);
     supported.push_back(this->Supported[i]);
+    strip.push_back(inStrip[i]);
   }
   this->TracePoints.swap(points);
   this->TraceIndex.swap(index);
   this->Supported.swap(supported);
+  this->InStrip.swap(strip);
+  // A trace among lines side by side follows the points nearer to its own line than to the
+  // next: within half the median gap between them.
+  this->StripHalfGap = gaps.empty() ? 0.0 : 0.5 * featurepoints::UpperMedian(gaps);
   std::vector<V3>().swap(this->TraceMoved); // indexed as the trace points were
   this->TraceSearch.Build(this->TracePoints);
 }
@@ -893,10 +1114,13 @@ void CurveRun::TraceFrom(vtkIdType seed, int trace)
   std::vector<vtkIdType> ids;
   V3 x = this->TracePoints[seed];
   LineFit f = this->FitAt(x, ids);
+  bool own = false;
+  f = this->OwnLine(x, f, ids, &own);
   for (int round = 0; round < 2 && f.Count >= MinFitPoints; ++round)
   {
     x = ProjectOnLine(x, f);
     f = this->FitAt(x, ids);
+    f = this->OwnLine(x, f, ids, &own);
   }
   // A seed among stray feature points beside a crease would trace across it.
   if (f.Count < MinFitPoints || f.Flatness > MaxFlatness ||
@@ -911,6 +1135,8 @@ void CurveRun::TraceFrom(vtkIdType seed, int trace)
     return;
   }
   const int start = this->G.Add(x);
+  this->StripVertex.resize(this->G.Vertices.size(), 0);
+  this->StripVertex[start] = own;
   this->TraceOf.push_back(trace);
   this->ArcOf.push_back(0);
   this->Hash.Insert(start, x);
@@ -932,11 +1158,12 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
     // The fit at y; where the trace points are sparse or noisy, again over a wider ball.
     LineFit f;
     V3 t;
-    bool found = false, border = false;
+    bool found = false, border = false, own = false;
     for (const double radius : { this->R, 1.5 * this->R })
     {
       this->TraceSearch.Within(y, radius, ids);
       f = FitLine(this->TracePoints, ids, y);
+      f = this->OwnLine(y, f, ids, &own);
       int ahead = 0;
       for (vtkIdType i : ids)
       {
@@ -975,6 +1202,7 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
         }
       }
       f = FitLine(this->TracePoints, tube, y);
+      own = false;
       t = f.Direction.dot(d) >= 0.0 ? f.Direction : V3(-f.Direction);
       found = ahead >= 2 && f.Count >= MinFitPoints && f.Flatness <= MaxFlatness &&
         t.dot(d) >= MaxTurnPerStep && std::abs(t.dot(c)) >= AcrossNormals;
@@ -997,6 +1225,8 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
       return;
     }
     const int v = this->G.Add(y);
+    this->StripVertex.resize(this->G.Vertices.size(), 0);
+    this->StripVertex[v] = own;
     this->TraceOf.push_back(trace);
     this->ArcOf.push_back(arc);
     this->Hash.Insert(v, y);
@@ -2746,7 +2976,7 @@ void CurveRun::OntoMovedPoints(
     return;
   }
   const double halfLength = SectionLength * this->R;
-  const double across = MovedBand * this->S;
+  const double reach = std::max(MovedBand * this->S, this->StripHalfGap);
   std::vector<vtkIdType> ids;
   std::vector<double> a, b;
   for (size_t c = 0; c < curves.size(); ++c)
@@ -2757,10 +2987,13 @@ void CurveRun::OntoMovedPoints(
     const int n = static_cast<int>(x.size()) - (closed ? 1 : 0); // distinct vertices
     for (int k = closed ? 0 : 1; k < (closed ? n : n - 1); ++k)
     {
-      if (this->G.Node[chains[c].Ids[k]] || this->LocalType(x[k]) == BORDER)
+      const bool strip = this->IsStripVertex(chains[c].Ids[k]);
+      if (this->G.Node[chains[c].Ids[k]] || (!strip && this->LocalType(x[k]) == BORDER))
       {
         continue;
       }
+      // A strip vertex: only its own line's moved points.
+      const double across = strip ? this->StripHalfGap : MovedBand * this->S;
       const V3 chord = x[(k + 1) % n] - x[(k + n - 1) % n];
       if (!(chord.norm() > 0.0))
       {
@@ -2768,7 +3001,7 @@ void CurveRun::OntoMovedPoints(
       }
       const V3 t = chord.normalized();
       const V3 e1 = t.unitOrthogonal(), e2 = t.cross(e1);
-      this->MovedSearch.Within(x[k], std::sqrt(halfLength * halfLength + across * across), ids);
+      this->MovedSearch.Within(x[k], std::sqrt(halfLength * halfLength + reach * reach), ids);
       a.clear();
       b.clear();
       for (vtkIdType i : ids)
@@ -2821,7 +3054,10 @@ std::vector<std::vector<V3>> CurveRun::FitCurves(const std::vector<Chain>& chain
   }
   for (int v = 0; v < n; ++v)
   {
-    if (this->G.Degree(v) > 0 && !this->G.Node[v] && tangent[v].squaredNorm() > 0.0)
+    // A strip vertex lies on its own line of moved points already; the cross-section holds the
+    // lines beside it too.
+    if (this->G.Degree(v) > 0 && !this->G.Node[v] && tangent[v].squaredNorm() > 0.0 &&
+      !this->IsStripVertex(v))
     {
       fitted[v] = this->FitSection(this->G.Vertices[v], tangent[v]);
     }
@@ -2852,7 +3088,7 @@ std::vector<std::vector<V3>> CurveRun::FitCurves(const std::vector<Chain>& chain
     const int n = static_cast<int>(x.size()) - (closed ? 1 : 0);
     for (int k = closed ? 0 : 1; k < (closed ? n : n - 1); ++k)
     {
-      if (!this->G.Node[chains[c].Ids[k]])
+      if (!this->G.Node[chains[c].Ids[k]] && !this->IsStripVertex(chains[c].Ids[k]))
       {
         y[k] = this->FitAlong(x, arc, closed, k, AlongLength * this->R);
       }

@@ -24,7 +24,15 @@
  *    voters agree on) form no line, the neighbourhood holds creases side by side: every crease
  *    point within FitRadius s of such a point is traced where it is moved to (parallel creases
  *    5 s apart: curve F1 0.42 -> 0.80). Where the moved points form one line, a strip is the wide
- *    band of one crease and keeps its ridges.
+ *    band of one crease and keeps its ridges. Where they form two lines side by side (across
+ *    their line, the best split into two groups leaves a gap wider than 2 sqrt(3) times the
+ *    groups' spread, what splitting one even band leaves, and wider than 1.5 s; each group runs
+ *    along the whole 1.5 FitRadius ball; and a quarter of the trace points around agree), as
+ *    creases 3 s apart or a wall's rim face between its two edges do, the strip is traced on
+ *    the moved points too, each trace on the points within half the median gap of its own line,
+ *    and its vertices stay on that line (no cross-section fit, which holds both). Border points
+ *    that carry a `CreaseOffset` (a wall's rim, typed border from either side's sheet) are moved
+ *    as crease points are.
  *    From the most line-like trace point not yet covered, corners (FeatureType 3) aside, a
  *    trace steps StepLength s at a time along the
  *    line fitted (PCA) to the trace points within FitRadius s (1.5 FitRadius where that fit
