@@ -1177,9 +1177,9 @@ void CurveRun::Walk(int start, V3 x, V3 d, int trace, int sign)
         found = true;
         break;
       }
-      if (ahead < 2 && radius == this->R)
+      if (ahead < 2 && radius == this->R && !own)
       {
-        break; // an end: nothing ahead
+        break; // an end: nothing ahead (on a strip's own line, try the wider ball first)
       }
     }
     // Stray feature points beside the crease (or a neighbouring crease's band) turned the fit:
