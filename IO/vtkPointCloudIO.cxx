@@ -818,6 +818,271 @@ std::string LegacyPointsProblem(const std::string& fileName)
   return {};
 }
 
+// Why VTK's legacy reader failed on a binary file, where it says only "Error reading binary
+// data!": the first block of binary values (points, cells, point or cell data, field arrays)
+// that the file ends inside, with its header's line. Each block's size follows from its header
+// and the section's count (the legacy format's types: bit, 1-, 2-, 4- and 8-byte values; ids as
+// 4-byte ints before version 5, offsets and connectivity as their declared type from 5 on).
+// Empty when the file is not binary, holds string arrays, a keyword this walk does not know, or
+// no block cut short (VTK's message then stands).
+std::string LegacyBinaryProblem(const std::string& fileName)
+{
+  std::ifstream file(fileName, std::ios::binary | std::ios::ate);
+  if (!file)
+  {
+    return {};
+  }
+  const long long size = static_cast<long long>(file.tellg());
+  file.seekg(0);
+  std::string line;
+  long number = 0;
+  long long lineStart = 0; // the byte where the line last read starts
+  auto next = [&](std::vector<std::string>& words) {
+    words.clear();
+    while (words.empty())
+    {
+      lineStart = static_cast<long long>(file.tellg());
+      if (!std::getline(file, line))
+      {
+        break;
+      }
+      ++number;
+      std::istringstream in(line);
+      for (std::string w; in >> w;)
+      {
+        words.push_back(w);
+      }
+    }
+    return !words.empty();
+  };
+  std::vector<std::string> words;
+  double version = 0.0;
+  for (int header = 0; header < 3; ++header)
+  {
+    if (!std::getline(file, line))
+    {
+      return {};
+    }
+    ++number;
+    if (header == 0)
+    {
+      const size_t at = line.find("Version");
+      version = at == std::string::npos ? 0.0 : std::atof(line.c_str() + at + 7);
+    }
+    if (header == 2)
+    {
+      std::string format = line;
+      format.erase(std::remove_if(format.begin(), format.end(),
+                     [](unsigned char c) { return std::isspace(c) != 0; }),
+        format.end());
+      std::transform(format.begin(), format.end(), format.begin(),
+        [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+      if (format != "BINARY")
+      {
+        return {};
+      }
+    }
+  }
+  auto bytesOf = [](const std::string& type, long long values) -> long long {
+    static const std::map<std::string, int> sizes = { { "unsigned_char", 1 }, { "char", 1 },
+      { "unsigned_short", 2 }, { "short", 2 }, { "unsigned_int", 4 }, { "int", 4 },
+      { "unsigned_long", 8 }, { "long", 8 }, { "float", 4 }, { "double", 8 },
+      { "vtkIdType", 4 }, { "vtktypeint64", 8 }, { "vtktypeuint64", 8 } };
+    if (type == "bit")
+    {
+      return (values + 7) / 8;
+    }
+    const auto found = sizes.find(type);
+    return found == sizes.end() ? -1 : found->second * values;
+  };
+  auto count = [](const std::string& text, long long& value) {
+    const auto parsed = std::from_chars(text.data(), text.data() + text.size(), value);
+    return parsed.ec == std::errc() && parsed.ptr == text.data() + text.size() && value >= 0;
+  };
+  // Skips a block of `bytes` after the line just read; the problem when the file ends inside it.
+  std::string problem;
+  bool binaryBefore = false;
+  auto block = [&](long long bytes, const std::string& what) {
+    const long long at = static_cast<long long>(file.tellg());
+    if (bytes < 0 || at < 0)
+    {
+      return false;
+    }
+    if (at + bytes > size)
+    {
+      // Past the first binary block, line numbers mean nothing to an editor: the byte.
+      problem = fileName + (binaryBefore ? std::string() : ":" + std::to_string(number)) + ": " +
+        what + (binaryBefore ? " at byte " + std::to_string(lineStart) : std::string()) +
+        " needs " + std::to_string(bytes) + " bytes of binary data after it, but the file ends " +
+        std::to_string(size - at) + " bytes after it (a file cut short)";
+      return false;
+    }
+    file.seekg(at + bytes);
+    binaryBefore = binaryBefore || bytes > 0;
+    return true;
+  };
+  long long items = 0; // the current section's points or cells
+  const bool ids64 = version >= 5.0;
+  while (next(words))
+  {
+    std::string keyword = words[0];
+    std::transform(keyword.begin(), keyword.end(), keyword.begin(),
+      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    long long n = 0, m = 0;
+    const std::string quoted =
+      "'" + vtkPointCloudIO::MessageText(line.substr(0, 60).c_str()) + "'";
+    if (keyword == "DATASET")
+    {
+      continue;
+    }
+    if (keyword == "POINTS" && words.size() >= 3 && count(words[1], n))
+    {
+      if (!block(bytesOf(words[2], 3 * n), "the POINTS line " + quoted))
+      {
+        return problem;
+      }
+    }
+    else if ((keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" ||
+               keyword == "TRIANGLE_STRIPS" || keyword == "CELLS") &&
+      words.size() >= 3 && count(words[1], n) && count(words[2], m))
+    {
+      if (!ids64)
+      {
+        if (!block(4 * m, "the cells line " + quoted))
+        {
+          return problem;
+        }
+        continue;
+      }
+      // Version 5: OFFSETS (n values) and CONNECTIVITY (m values), each with its type.
+      for (const long long values : { n, m })
+      {
+        if (!next(words) || words.size() < 2)
+        {
+          return {};
+        }
+        const std::string what =
+          "the line '" + vtkPointCloudIO::MessageText(line.substr(0, 60).c_str()) + "'";
+        if (!block(bytesOf(words[1], values), what))
+        {
+          return problem;
+        }
+      }
+    }
+    else if (keyword == "CELL_TYPES" && words.size() >= 2 && count(words[1], n))
+    {
+      if (!block(4 * n, "the CELL_TYPES line " + quoted))
+      {
+        return problem;
+      }
+    }
+    else if ((keyword == "POINT_DATA" || keyword == "CELL_DATA") && words.size() >= 2 &&
+      count(words[1], n))
+    {
+      items = n;
+    }
+    else if (keyword == "SCALARS" && words.size() >= 3)
+    {
+      long long components = 1;
+      if (words.size() >= 4 && !count(words[3], components))
+      {
+        return {};
+      }
+      const std::string type = words[2];
+      const std::string what = "the SCALARS line " + quoted;
+      if (!next(words))
+      {
+        return {};
+      }
+      std::string table = words[0];
+      std::transform(table.begin(), table.end(), table.begin(),
+        [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+      if (table != "LOOKUP_TABLE")
+      {
+        return {};
+      }
+      if (!block(bytesOf(type, items * components), what))
+      {
+        return problem;
+      }
+    }
+    else if ((keyword == "VECTORS" || keyword == "NORMALS" || keyword == "TENSORS") &&
+      words.size() >= 3)
+    {
+      const long long per = keyword == "TENSORS" ? 9 : 3;
+      if (!block(bytesOf(words[2], items * per), "the " + keyword + " line " + quoted))
+      {
+        return problem;
+      }
+    }
+    else if (keyword == "TEXTURE_COORDINATES" && words.size() >= 4 && count(words[2], n))
+    {
+      if (!block(bytesOf(words[3], items * n), "the TEXTURE_COORDINATES line " + quoted))
+      {
+        return problem;
+      }
+    }
+    else if (keyword == "COLOR_SCALARS" && words.size() >= 3 && count(words[2], n))
+    {
+      if (!block(items * n, "the COLOR_SCALARS line " + quoted))
+      {
+        return problem;
+      }
+    }
+    else if (keyword == "LOOKUP_TABLE" && words.size() >= 3 && count(words[2], n))
+    {
+      if (!block(4 * n, "the LOOKUP_TABLE line " + quoted))
+      {
+        return problem;
+      }
+    }
+    else if (keyword == "FIELD" && words.size() >= 3 && count(words[2], n))
+    {
+      for (long long a = 0; a < n; ++a)
+      {
+        if (!next(words))
+        {
+          return {};
+        }
+        if (words[0] == "METADATA")
+        {
+          --a; // a block of lines up to an empty one
+          while (std::getline(file, line) && !line.empty())
+          {
+            ++number;
+          }
+          ++number;
+          continue;
+        }
+        long long components = 0, tuples = 0;
+        if (words.size() < 4 || !count(words[1], components) || !count(words[2], tuples))
+        {
+          return {};
+        }
+        const std::string what =
+          "the field array line '" + vtkPointCloudIO::MessageText(line.substr(0, 60).c_str()) + "'";
+        if (!block(bytesOf(words[3], components * tuples), what))
+        {
+          return problem;
+        }
+      }
+    }
+    else if (keyword == "METADATA")
+    {
+      while (std::getline(file, line) && !line.empty())
+      {
+        ++number;
+      }
+      ++number;
+    }
+    else
+    {
+      return {}; // a keyword this walk does not follow: VTK's message stands
+    }
+  }
+  return {};
+}
+
 // The XML of a VTK XML file up to its "<AppendedData" tag (at most its first 64 MB where it has
 // none) into `head`; returns where that tag starts (npos: none).
 size_t ReadXMLHead(std::ifstream& in, std::string& head)
@@ -1782,7 +2047,11 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
   if (!updated || !message.empty() || reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const unsigned long code = reader->GetErrorCode();
-    const std::string legacy = extension == "vtk" ? LegacyPointsProblem(fileName)
+    auto legacyProblem = [&fileName]() {
+      const std::string ascii = LegacyPointsProblem(fileName);
+      return ascii.empty() ? LegacyBinaryProblem(fileName) : ascii;
+    };
+    const std::string legacy = extension == "vtk" ? legacyProblem()
       : extension == "vtp" || extension == "vtu"
       ? XMLCompressionProblem(fileName,
           !message.empty() ? message : std::string(vtkErrorCode::GetStringFromErrorCode(code)))

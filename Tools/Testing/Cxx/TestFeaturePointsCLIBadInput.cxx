@@ -1000,6 +1000,18 @@ void LegacyFiles()
       "default\n1 nan 3\n");
   ExpectFailure("legacy VTK with a nan in its point data", { Path("nan-data.vtk"), Path("o.vtp") },
     1, "nan-data.vtk:10: value 2 of the line ('nan') is not a finite number");
+  // Binary, cut short in its point data (VTK's reader says only "Error reading binary data!"):
+  // the block's header and where it starts are named. 100 points (1,200 bytes), then a field
+  // array of 100 floats of which 40 bytes are there.
+  std::string binary = "# vtk DataFile Version 5.1\nt\nBINARY\nDATASET POLYDATA\nPOINTS 100 float\n";
+  binary += std::string(1200, '\0') + "\nPOINT_DATA 100\nFIELD FieldData 1\nv 1 100 float\n";
+  const size_t arrayLine = binary.rfind("v 1 100 float");
+  binary += std::string(40, '\0');
+  Spit(Path("cut-binary.vtk"), binary);
+  ExpectFailure("binary legacy VTK cut in its point data", { Path("cut-binary.vtk"),
+    Path("o.vtp") }, 1, "cut-binary.vtk: the field array line 'v 1 100 float' at byte " +
+      std::to_string(arrayLine) + " needs 400 bytes of binary data after it, but the file ends "
+      "40 bytes after it (a file cut short)");
   // What VTK's reader reads is not refused: a '+' and leading zeros in the count; field data
   // before the points whose array is named POINTS (its line is no data set's POINTS line).
   Spit(Path("plus.vtk"), header + "POINTS +0003 float\n0 0 0 1 0 0 0 1 0\n");
