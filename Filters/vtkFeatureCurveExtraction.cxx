@@ -942,7 +942,7 @@ void CurveRun::KeepRidges()
       twoLines[i] = 1;
       gapOf[i] = gap;
     }
-    if (!noLine)
+    if (!noLine || type == BORDER) // borders carry traces whatever their score
     {
       continue;
     }

@@ -25,7 +25,8 @@
  * Points with a NaN or infinite coordinate are left out of the grid: no query returns them.
  * Coincident points are grouped once per position, so that stacks of copies do not slow the
  * queries down; points that differ by less than 2^-540 (about 2.8e-163) in every coordinate,
- * whose squared distance underflows to 0, count as coincident. Where no box can spread the points over the cells (clusters far apart relative
+ * whose squared distance underflows to 0, count as coincident (a query within about 1e-146 of
+ * them gets one distance for all, exact only to a relative 2^-40). Where no box can spread the points over the cells (clusters far apart relative
  * to their size), a k-d tree (nanoflann) answers the queries instead, with the same results
  * (see SetSearchStructure()).
  *

@@ -21,16 +21,21 @@
 
 namespace featurepoints
 {
-// Text of a file in a message: quoted, at most 64 characters, control and other non-ASCII
-// bytes shown as '?' (a header's raw bytes are never echoed to a terminal).
-inline std::string Quote(std::string_view text)
+// Text of a file in a message: at most 64 characters, control and other non-ASCII bytes shown
+// as '?' (a header's raw bytes are never echoed to a terminal); Quote() puts it in quotes.
+inline std::string Printable(std::string_view text)
 {
   std::string shown(text.substr(0, 64));
   for (char& c : shown)
   {
     c = (c >= 32 && c < 127) ? c : '?';
   }
-  return "'" + shown + (text.size() > 64 ? "...'" : "'");
+  return text.size() > 64 ? shown + "..." : shown;
+}
+
+inline std::string Quote(std::string_view text)
+{
+  return "'" + Printable(text) + "'";
 }
 
 inline bool HostIsBigEndian()

@@ -883,7 +883,13 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       }
     }
   }
-  auto bytesOf = [](const std::string& type, long long values) -> long long {
+  // Products of declared counts, saturated (a corrupt count is only ever compared with the
+  // file's size).
+  auto mul = [](long long a, long long b) -> long long {
+    const double product = static_cast<double>(a) * static_cast<double>(b);
+    return product > 4e18 ? 4000000000000000000LL : a * b;
+  };
+  auto bytesOf = [mul](const std::string& type, long long values) -> long long {
     static const std::map<std::string, int> sizes = { { "unsigned_char", 1 }, { "char", 1 },
       { "unsigned_short", 2 }, { "short", 2 }, { "unsigned_int", 4 }, { "int", 4 },
       { "unsigned_long", 8 }, { "long", 8 }, { "float", 4 }, { "double", 8 },
@@ -893,7 +899,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       return (values + 7) / 8;
     }
     const auto found = sizes.find(type);
-    return found == sizes.end() ? -1 : found->second * values;
+    return found == sizes.end() ? -1 : mul(found->second, values);
   };
   auto count = [](const std::string& text, long long& value) {
     const auto parsed = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -937,7 +943,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     }
     if (keyword == "POINTS" && words.size() >= 3 && count(words[1], n))
     {
-      if (!block(bytesOf(words[2], 3 * n), "the POINTS line " + quoted))
+      if (!block(bytesOf(words[2], mul(3, n)), "the POINTS line " + quoted))
       {
         return problem;
       }
@@ -948,7 +954,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     {
       if (!ids64)
       {
-        if (!block(4 * m, "the cells line " + quoted))
+        if (!block(mul(4, m), "the cells line " + quoted))
         {
           return problem;
         }
@@ -971,7 +977,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     }
     else if (keyword == "CELL_TYPES" && words.size() >= 2 && count(words[1], n))
     {
-      if (!block(4 * n, "the CELL_TYPES line " + quoted))
+      if (!block(mul(4, n), "the CELL_TYPES line " + quoted))
       {
         return problem;
       }
@@ -990,10 +996,14 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       }
       const std::string type = words[2];
       const std::string what = "the SCALARS line " + quoted;
+      const long scalarsLine = number;
+      const long long scalarsStart = lineStart;
       if (!next(words))
       {
         return {};
       }
+      number = scalarsLine; // the message names the SCALARS line
+      lineStart = scalarsStart;
       std::string table = words[0];
       std::transform(table.begin(), table.end(), table.begin(),
         [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
@@ -1001,7 +1011,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       {
         return {};
       }
-      if (!block(bytesOf(type, items * components), what))
+      if (!block(bytesOf(type, mul(items, components)), what))
       {
         return problem;
       }
@@ -1010,28 +1020,28 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       words.size() >= 3)
     {
       const long long per = keyword == "TENSORS" ? 9 : 3;
-      if (!block(bytesOf(words[2], items * per), "the " + keyword + " line " + quoted))
+      if (!block(bytesOf(words[2], mul(items, per)), "the " + keyword + " line " + quoted))
       {
         return problem;
       }
     }
     else if (keyword == "TEXTURE_COORDINATES" && words.size() >= 4 && count(words[2], n))
     {
-      if (!block(bytesOf(words[3], items * n), "the TEXTURE_COORDINATES line " + quoted))
+      if (!block(bytesOf(words[3], mul(items, n)), "the TEXTURE_COORDINATES line " + quoted))
       {
         return problem;
       }
     }
     else if (keyword == "COLOR_SCALARS" && words.size() >= 3 && count(words[2], n))
     {
-      if (!block(items * n, "the COLOR_SCALARS line " + quoted))
+      if (!block(mul(items, n), "the COLOR_SCALARS line " + quoted))
       {
         return problem;
       }
     }
     else if (keyword == "LOOKUP_TABLE" && words.size() >= 3 && count(words[2], n))
     {
-      if (!block(4 * n, "the LOOKUP_TABLE line " + quoted))
+      if (!block(mul(4, n), "the LOOKUP_TABLE line " + quoted))
       {
         return problem;
       }
@@ -1061,7 +1071,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
         }
         const std::string what =
           "the field array line '" + vtkPointCloudIO::MessageText(line.substr(0, 60).c_str()) + "'";
-        if (!block(bytesOf(words[3], components * tuples), what))
+        if (!block(bytesOf(words[3], mul(components, tuples)), what))
         {
           return problem;
         }

@@ -36,6 +36,7 @@
 vtkStandardNewMacro(vtkPointCloudPLYReader);
 
 using namespace featurepoints::ply;
+using featurepoints::Printable;
 using featurepoints::Quote;
 
 namespace
@@ -410,7 +411,8 @@ private:
   bool FailEnd(const Element& e, uint64_t row, const std::string& detail)
   {
     return this->Fail(std::string(this->In.IOError() ? "read error in " : "the file ends in ") +
-      e.Name + " " + std::to_string(row + 1) + " of " + std::to_string(e.Count) + " (" + detail +
+      Printable(e.Name) + " " + std::to_string(row + 1) + " of " + std::to_string(e.Count) + " (" +
+      detail +
       ")");
   }
   bool FailLongLine() { return this->Fail("line longer than 64 MiB", this->Line + 1); }
@@ -692,7 +694,7 @@ bool PLYParser::SkipElement(const Element& e)
       if (n < 0)
       {
         return this->Fail("negative count " + std::to_string(n) + " of list " + Quote(p.Name) +
-          " in " + e.Name + " " + std::to_string(r + 1));
+          " in " + Printable(e.Name) + " " + std::to_string(r + 1));
       }
       if (!this->In.Skip(static_cast<uint64_t>(n) * TypeSize(p.Type)))
       {
@@ -1116,8 +1118,8 @@ bool PLYParser::ReadAsciiVertices(const Element& vertex)
         const int64_t items = LoadCount(p.CountType, scratch, false);
         if (items < 0)
         {
-          return this->Fail("negative list count " + std::to_string(items) + " in property '" +
-              p.Name + "' of " + which(),
+          return this->Fail("negative list count " + std::to_string(items) + " in property " +
+              Quote(p.Name) + " of " + which(),
             this->Line);
         }
         for (int64_t k = 0; k < items; ++k)
