@@ -855,6 +855,23 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     }
     return !words.empty();
   };
+  // A METADATA block: its lines up to an empty one.
+  auto skipMetadata = [&]() {
+    while (std::getline(file, line) && !line.empty())
+    {
+      ++number;
+    }
+    ++number;
+  };
+  auto upper = [](std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return text;
+  };
+  // The line just read, quoted for a message.
+  auto quotedLine = [&line]() {
+    return "'" + vtkPointCloudIO::MessageText(line.substr(0, 60).c_str()) + "'";
+  };
   std::vector<std::string> words;
   double version = 0.0;
   for (int header = 0; header < 3; ++header)
@@ -875,9 +892,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       format.erase(std::remove_if(format.begin(), format.end(),
                      [](unsigned char c) { return std::isspace(c) != 0; }),
         format.end());
-      std::transform(format.begin(), format.end(), format.begin(),
-        [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-      if (format != "BINARY")
+      if (upper(format) != "BINARY")
       {
         return {};
       }
@@ -919,7 +934,8 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       // Past the first binary block, line numbers mean nothing to an editor: the byte.
       problem = fileName + (binaryBefore ? std::string() : ":" + std::to_string(number)) + ": " +
         what + (binaryBefore ? " at byte " + std::to_string(lineStart) : std::string()) +
-        " needs " + std::to_string(bytes) + " bytes of binary data after it, but the file ends " +
+        " needs " + (bytes >= 4000000000000000000LL ? std::string("more than 4e18") : std::to_string(bytes)) +
+        " bytes of binary data after it, but the file ends " +
         std::to_string(size - at) + " bytes after it (a file cut short)";
       return false;
     }
@@ -931,12 +947,9 @@ std::string LegacyBinaryProblem(const std::string& fileName)
   const bool ids64 = version >= 5.0;
   while (next(words))
   {
-    std::string keyword = words[0];
-    std::transform(keyword.begin(), keyword.end(), keyword.begin(),
-      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    const std::string keyword = upper(words[0]);
     long long n = 0, m = 0;
-    const std::string quoted =
-      "'" + vtkPointCloudIO::MessageText(line.substr(0, 60).c_str()) + "'";
+    const std::string quoted = quotedLine();
     if (keyword == "DATASET")
     {
       continue;
@@ -967,8 +980,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
         {
           return {};
         }
-        const std::string what =
-          "the line '" + vtkPointCloudIO::MessageText(line.substr(0, 60).c_str()) + "'";
+        const std::string what = "the line " + quotedLine();
         if (!block(bytesOf(words[1], values), what))
         {
           return problem;
@@ -1004,10 +1016,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       }
       number = scalarsLine; // the message names the SCALARS line
       lineStart = scalarsStart;
-      std::string table = words[0];
-      std::transform(table.begin(), table.end(), table.begin(),
-        [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-      if (table != "LOOKUP_TABLE")
+      if (upper(words[0]) != "LOOKUP_TABLE")
       {
         return {};
       }
@@ -1056,12 +1065,8 @@ std::string LegacyBinaryProblem(const std::string& fileName)
         }
         if (words[0] == "METADATA")
         {
-          --a; // a block of lines up to an empty one
-          while (std::getline(file, line) && !line.empty())
-          {
-            ++number;
-          }
-          ++number;
+          --a; // not an array
+          skipMetadata();
           continue;
         }
         long long components = 0, tuples = 0;
@@ -1069,8 +1074,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
         {
           return {};
         }
-        const std::string what =
-          "the field array line '" + vtkPointCloudIO::MessageText(line.substr(0, 60).c_str()) + "'";
+        const std::string what = "the field array line " + quotedLine();
         if (!block(bytesOf(words[3], mul(components, tuples)), what))
         {
           return problem;
@@ -1079,11 +1083,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     }
     else if (keyword == "METADATA")
     {
-      while (std::getline(file, line) && !line.empty())
-      {
-        ++number;
-      }
-      ++number;
+      skipMetadata();
     }
     else
     {
