@@ -1699,9 +1699,10 @@ struct CreaseRun
   // they read).
   void FitInView(const float* normal, vtkIdType begin, vtkIdType end);
   // Scale per point: where the widest hinge does not explain the neighbourhood, the largest
-  // smaller scale whose hinge does. Sets detail[id] where not even the smallest is explained.
-  void ChooseScales(
-    const float* normal, int smallest, unsigned char* detail, vtkIdType begin, vtkIdType end);
+  // smaller scale whose hinge does. Sets detail[id] where not even the smallest is explained
+  // and its fit bends by minAngle (degrees) or more.
+  void ChooseScales(const float* normal, int smallest, double minAngle, unsigned char* detail,
+    vtkIdType begin, vtkIdType end);
   // The model of each fit (hinge or crossing planes) and its gain.
   void ChooseModels(float* gain, float* angle, vtkIdType begin, vtkIdType end);
   // Distributed runs: the halo's models (what the votes and the directions read) from their
@@ -3134,8 +3135,8 @@ inline bool Explains(const CreaseFit& f, double variance)
     MisfitBound(f.Points - 6) * variance;
 }
 
-void CreaseRun::ChooseScales(
-  const float* normal, int smallest, unsigned char* detail, vtkIdType first, vtkIdType last)
+void CreaseRun::ChooseScales(const float* normal, int smallest, double minAngle,
+  unsigned char* detail, vtkIdType first, vtkIdType last)
 {
   vtkSMPTools::For(first, last, [&](vtkIdType begin, vtkIdType end) {
     Scratch& s = this->Scratches.Local();
@@ -3206,12 +3207,17 @@ void CreaseRun::ChooseScales(
       // members that vote for the other features within it. The point is a feature point
       // (a detail) unless the crossing planes, even where they do not cross, fit it within the
       // noise: they take a third of a noise sample's residual, so that a detail is a
-      // neighbourhood that no model at all explains.
+      // neighbourhood that no model at all explains. And only where the surface bends there
+      // by minAngle or more, as a crease must to vote: the hinge's or the crossing planes'
+      // angle. On a clean cloud sampled from a tessellated part, sigma sits at its floor and
+      // the facets of a curved face (a few degrees each, several within the smallest scale) are
+      // explained by no model, yet they are the smooth face that the vote's angle ignores.
       this->Fits.Edit(r) = fit;
       this->Scale[r] = fit.Points;
       this->Reach2[r] = lastReach2;
       if (std::min(std::min(fit.RSSQ, fit.Hinge.RSS2), fit.Cross.RSS2) >
-        MisfitBound(fit.Points - 6) * this->Variance)
+          MisfitBound(fit.Points - 6) * this->Variance &&
+        !(std::max(fit.Hinge.Angle, fit.Cross.Angle) < minAngle))
       {
         detail[this->Ids[r]] = 1;
       }
@@ -4273,8 +4279,8 @@ int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
     run.FitInView(normal, begin, end);
     if (this->MultiScale)
     {
-      run.ChooseScales(normal, std::min(SmallestScale, this->NumberOfNeighbors), detail.data(),
-        begin, end);
+      run.ChooseScales(normal, std::min(SmallestScale, this->NumberOfNeighbors),
+        this->MinimumAngle, detail.data(), begin, end);
     }
     run.ChooseModels(gains->GetPointer(0), angles->GetPointer(0), begin, end);
   };
