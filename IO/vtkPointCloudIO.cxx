@@ -706,7 +706,8 @@ std::string XMLPointsProblem(const std::string& fileName)
 
 // Why VTK's legacy reader failed on an ASCII file, where it says only "Error reading ascii
 // data": the first coordinate of the data set's POINTS that is no finite number (a "nan", an
-// "inf", a word), or the end of the file before the declared count. Empty when the file is not
+// "inf", a word), the end of the file before the declared count, or a number after the declared
+// count (VTK then reads it as a keyword: "Unrecognized keyword: 0"). Empty when the file is not
 // ASCII or nothing of that kind is found (VTK's message then stands).
 std::string LegacyPointsProblem(const std::string& fileName)
 {
@@ -744,10 +745,20 @@ std::string LegacyPointsProblem(const std::string& fileName)
   }
   const long long values = 3 * std::max(count, 0LL);
   long long read = 0;
+  // A number where the section after the points should start.
+  auto isNumber = [](const std::string& word) {
+    double value = 0.0;
+    const char* end = word.data() + word.size();
+    const auto parsed = std::from_chars(word.data() + (word[0] == '+' ? 1 : 0), end, value);
+    return parsed.ec == std::errc() && parsed.ptr == end;
+  };
+  const std::string tooMany = ": the POINTS block holds more than " + std::to_string(count) +
+    " x 3 values (a wrong POINTS count)";
   while (read < values && std::getline(file, line))
   {
     ++number;
     std::istringstream words(line);
+    std::string extra;
     for (std::string word; read < values && words >> word; ++read)
     {
       double value = 0.0;
@@ -759,6 +770,10 @@ std::string LegacyPointsProblem(const std::string& fileName)
           std::to_string(read % 3 + 1) + " of point " + std::to_string(read / 3 + 1) + " ('" +
           (word.size() > 40 ? word.substr(0, 40) + "..." : word) + "') is not a finite number";
       }
+    }
+    if (read == values && words >> extra && isNumber(extra))
+    {
+      return fileName + ":" + std::to_string(number) + tooMany;
     }
   }
   if (count > 0 && read < values)
@@ -777,6 +792,7 @@ std::string LegacyPointsProblem(const std::string& fileName)
   static const std::set<std::string> types = { "bit", "unsigned_char", "char", "unsigned_short",
     "short", "unsigned_int", "int", "unsigned_long", "long", "float", "double", "vtkIdType",
     "vtktypeint64", "vtktypeuint64", "string", "utf8_string", "variant" };
+  bool first = count >= 0; // the first line after the points
   while (std::getline(file, line))
   {
     ++number;
@@ -790,6 +806,11 @@ std::string LegacyPointsProblem(const std::string& fileName)
     {
       continue;
     }
+    if (first && isNumber(all[0]))
+    {
+      return fileName + ":" + std::to_string(number) + tooMany;
+    }
+    first = false;
     const bool header = keywords.count(all[0]) > 0 || (all.size() == 4 && types.count(all[3]));
     if (header)
     {

@@ -44,6 +44,7 @@ constexpr size_t VersionMajorAt = 24;
 constexpr size_t VersionMinorAt = 25;
 constexpr size_t HeaderSizeAt = 94;
 constexpr size_t OffsetToPointDataAt = 96;
+constexpr size_t NumberOfVLRsAt = 100;
 constexpr size_t PointFormatAt = 104;
 constexpr size_t RecordLengthAt = 105;
 constexpr size_t LegacyPointCountAt = 107;
@@ -53,6 +54,10 @@ constexpr size_t PointCountAt = 247; // LAS 1.4: unsigned 64-bit
 constexpr size_t WaveformStartAt = 227; // LAS 1.3 and later: unsigned 64-bit, 0 where none
 constexpr size_t FirstEVLRAt = 235;     // LAS 1.4: unsigned 64-bit, 0 where none
 constexpr size_t HeaderSize12 = 227, HeaderSize13 = 235, HeaderSize14 = 375;
+// A variable-length record's header: reserved (2 bytes), user ID (16), record ID (2), record
+// length after the header (2), description (32).
+constexpr size_t VLRHeaderSize = 54;
+constexpr size_t VLRLengthAt = 20;
 
 // What a point data record format holds and where (bytes from the start of the record).
 struct RecordLayout
@@ -90,6 +95,45 @@ std::string Number(double value)
   char text[32];
   std::snprintf(text, sizeof(text), "%.17g", value);
   return text;
+}
+
+// Walks the `count` variable-length records from the end of the header: each one's header and
+// the data it declares must end by the offset to point data (bytes may follow the last one: LAS
+// 1.0's start signature, or user data). Their contents are not read. "" when they fit, else what
+// is wrong.
+std::string CheckVLRs(
+  std::istream& stream, uint64_t headerSize, uint64_t pointOffset, uint32_t count, bool swap)
+{
+  uint64_t at = headerSize;
+  char vlr[VLRHeaderSize];
+  for (uint32_t i = 0; i < count; ++i)
+  {
+    const std::string which =
+      "VLR " + std::to_string(i + 1) + " of " + std::to_string(count) + " (from byte " +
+      std::to_string(at) + ")";
+    if (at + VLRHeaderSize > pointOffset)
+    {
+      return which + ": its " + std::to_string(VLRHeaderSize) +
+        "-byte header runs past the offset to point data (byte " + std::to_string(pointOffset) +
+        ")";
+    }
+    stream.clear();
+    stream.seekg(static_cast<std::streamoff>(at));
+    stream.read(vlr, VLRHeaderSize);
+    if (stream.gcount() != static_cast<std::streamsize>(VLRHeaderSize))
+    {
+      return which + ": read error";
+    }
+    const uint64_t end = at + VLRHeaderSize + Load<uint16_t>(vlr + VLRLengthAt, swap);
+    if (end > pointOffset)
+    {
+      return which + ": its header and the " + std::to_string(end - at - VLRHeaderSize) +
+        " bytes of data it declares end at byte " + std::to_string(end) +
+        ", past the offset to point data (byte " + std::to_string(pointOffset) + ")";
+    }
+    at = end;
+  }
+  return "";
 }
 
 template <typename ArrayT>
@@ -200,6 +244,12 @@ int vtkPointCloudLASReader::RequestData(
       " (after the " + std::to_string(headerSize) + "-byte header, in a file of " +
       std::to_string(fileSize) + " bytes)");
   }
+  const std::string vlrs = CheckVLRs(
+    stream, headerSize, pointOffset, Load<uint32_t>(header + NumberOfVLRsAt, swap), swap);
+  if (!vlrs.empty())
+  {
+    return bad(vlrs);
+  }
   const int formatByte = static_cast<unsigned char>(header[PointFormatAt]);
   // LASzip marks its files by setting bit 7 (and 6) of a point data record format 0 to 10 (with
   // another format below, such as 99, the byte is just a format this reader does not know).
@@ -213,6 +263,11 @@ int vtkPointCloudLASReader::RequestData(
     return bad(
       "unsupported point data record format " + std::to_string(format) + " (0 to 10 are read)");
   }
+  if (format >= 6 && minor < 4)
+  {
+    return bad("point data record format " + std::to_string(format) + " needs LAS 1.4 (the file "
+      "is LAS " + std::to_string(major) + "." + std::to_string(minor) + ")");
+  }
   const RecordLayout& layout = Layouts[format];
   const size_t recordLength = Load<uint16_t>(header + RecordLengthAt, swap);
   if (recordLength < layout.Size)
@@ -224,7 +279,17 @@ int vtkPointCloudLASReader::RequestData(
   uint64_t count = Load<uint32_t>(header + LegacyPointCountAt, swap);
   if (minor >= 4)
   {
+    // A 64-bit count of 0 with a legacy count: the legacy count (writers that fill only that).
+    // Otherwise the legacy count is 0 or the same (LAS 1.4: the same for formats 0-5 when it
+    // fits, 0 for 6-10; 0 is taken for any format, as some writers write it). Where the count
+    // does not fit in 32 bits the legacy field is not read (writers leave 0, the maximum or the
+    // low bits there).
     const uint64_t count64 = Load<uint64_t>(header + PointCountAt, swap);
+    if (count64 != 0 && count64 <= 0xFFFFFFFFull && count != 0 && count != count64)
+    {
+      return bad("the legacy point count " + std::to_string(count) +
+        " is neither 0 nor the LAS 1.4 point count " + std::to_string(count64));
+    }
     count = count64 != 0 ? count64 : count;
   }
   double scale[3], offset[3];
@@ -253,7 +318,9 @@ int vtkPointCloudLASReader::RequestData(
       ", but the file (" + std::to_string(fileSize) + " bytes) holds " + std::to_string(room));
   }
   // Whole records beyond the declared count, up to the end of the file or what may follow the
-  // points (1.3's waveform packets, 1.4's extended records), would be dropped unsaid.
+  // points (1.3's waveform packets, 1.4's extended records), would be dropped unsaid. What
+  // follows, where there is something (a start not 0), starts after the declared points.
+  const uint64_t declaredEnd = pointOffset + count * recordLength;
   uint64_t pointsEnd = fileSize;
   for (const size_t at : { WaveformStartAt, FirstEVLRAt })
   {
@@ -261,6 +328,16 @@ int vtkPointCloudLASReader::RequestData(
                                                  : minor >= 4 && headerSize >= HeaderSize14)
       ? Load<uint64_t>(header + at, swap)
       : 0;
+    const char* what = at == WaveformStartAt ? "the waveform data packet record"
+                                             : "the first extended VLR";
+    if (next != 0 && (next < declaredEnd || next > fileSize))
+    {
+      return bad(std::string("the header says ") + what + " starts at byte " +
+        std::to_string(next) + ", " +
+        (next > fileSize ? "past the end of the file (" + std::to_string(fileSize) + " bytes)"
+                         : "before the end of the point data (bytes " +
+              std::to_string(pointOffset) + " to " + std::to_string(declaredEnd) + ")"));
+    }
     if (next > pointOffset && next < pointsEnd)
     {
       pointsEnd = next;

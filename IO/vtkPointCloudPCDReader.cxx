@@ -823,6 +823,13 @@ bool PCDParser::ReadCompressedSizes()
       " bytes, but " + std::to_string(this->Points) + " points of " +
       std::to_string(this->RowSize) + " bytes are " + std::to_string(expected));
   }
+  if (compressed == 0 && uncompressed > 0)
+  {
+    // An empty LZF stream decompresses to nothing: the bound below allows it up to 8 bytes.
+    return this->Fail("the compressed data declares 0 bytes (at byte " + std::to_string(start) +
+      ") for " + std::to_string(this->Points) + " points of " + std::to_string(this->RowSize) +
+      " bytes (" + std::to_string(uncompressed) + " bytes uncompressed)");
+  }
   if (compressed > this->In.Remaining())
   {
     return this->Fail("the file ends in the compressed data (" + std::to_string(compressed) +

@@ -156,6 +156,7 @@ struct Element
 {
   std::string Name;
   uint64_t Count = 0;
+  int Line = 0; // of its element line in the header
   std::vector<Property> Properties;
   std::set<std::string> PropertyNames; // to find a repeated name without a quadratic search
 };
@@ -381,6 +382,34 @@ std::string ParseMessage(Parse result, std::string_view token, PlyType type)
   }
 }
 
+// a + b, saturated at 2^64 - 1 (a sum of counts from a header is only compared with sizes).
+uint64_t SaturatedSum(uint64_t a, uint64_t b)
+{
+  return a > std::numeric_limits<uint64_t>::max() - b ? std::numeric_limits<uint64_t>::max()
+                                                       : a + b;
+}
+
+// The fewest bytes a row of element e can take: in binary its scalars and each list's count (the
+// lists empty), in ASCII a value and a separator per property.
+uint64_t LeastRowBytes(const Element& e, bool ascii)
+{
+  uint64_t row = 0;
+  for (const Property& p : e.Properties)
+  {
+    row += ascii ? 2 : TypeSize(p.IsList ? p.CountType : p.Type);
+  }
+  return row;
+}
+
+// The fewest bytes all the rows of element e can take, saturated at 2^64 - 1.
+uint64_t LeastBytes(const Element& e, bool ascii)
+{
+  const uint64_t row = LeastRowBytes(e, ascii);
+  return row > 0 && e.Count > std::numeric_limits<uint64_t>::max() / row
+    ? std::numeric_limits<uint64_t>::max()
+    : e.Count * row;
+}
+
 // The file, parsed in one pass. Every method returns false after setting Error.
 class PLYParser
 {
@@ -418,7 +447,9 @@ private:
   bool FailLongLine() { return this->Fail("line longer than 64 MiB", this->Line + 1); }
 
   bool ReadHeader();
-  bool SkipElement(const Element& e);
+  bool CheckElementBytes(const Element& vertex);
+  bool SkipElement(const Element& e, uint64_t reserve, const std::string& after);
+  bool ParseAsciiRow(const Element& e, uint64_t r, char* row);
   bool Prepare(const Element& vertex, vtkPolyData* output);
   bool CheckVertexBytes(const Element& vertex);
   bool ReadBinaryVertices(const Element& vertex);
@@ -562,6 +593,7 @@ bool PLYParser::ReadHeader()
       current = &this->Elements.back();
       current->Name = std::string(w[1]);
       current->Count = count;
+      current->Line = this->Line;
     }
     else if (keyword == "property")
     {
@@ -634,7 +666,12 @@ bool PLYParser::NextDataLine(std::string_view& line)
   return false;
 }
 
-bool PLYParser::SkipElement(const Element& e)
+// Reads past the rows of element e, an element before the vertices. ASCII: each row must hold
+// the values its properties and list counts say (ParseAsciiRow). Binary: when the file holds e's
+// rows at their least and the `reserve` bytes that the elements after e take at least (`after`
+// names them), a list count that runs into those bytes is e's error, not theirs (they would
+// otherwise be read from e's data and blamed).
+bool PLYParser::SkipElement(const Element& e, uint64_t reserve, const std::string& after)
 {
   if (e.Properties.empty())
   {
@@ -650,6 +687,11 @@ bool PLYParser::SkipElement(const Element& e)
         return this->In.TooLong()
           ? this->FailLongLine()
           : this->FailEnd(e, r, "ASCII data, after line " + std::to_string(this->Line));
+      }
+      Split(line, this->Tokens);
+      if (!this->ParseAsciiRow(e, r, nullptr))
+      {
+        return false;
       }
     }
     return true;
@@ -672,12 +714,24 @@ bool PLYParser::SkipElement(const Element& e)
     return this->In.Skip(e.Count * rowSize) ||
       this->FailEnd(e, 0, this->BinaryDetail(start, e.Count, rowSize));
   }
+  const uint64_t size = this->In.FileSize();
+  const uint64_t room = size - std::min(start, size);
+  const uint64_t least = LeastBytes(e, false);
+  const bool blame = least <= room && reserve <= room - least;
+  // The least bytes of the properties after each one in a row.
+  std::vector<uint64_t> rest(e.Properties.size() + 1, 0);
+  for (size_t i = e.Properties.size(); i-- > 0;)
+  {
+    const Property& p = e.Properties[i];
+    rest[i] = rest[i + 1] + TypeSize(p.IsList ? p.CountType : p.Type);
+  }
   const bool swap = this->SwapBytes();
   char count[8];
   for (uint64_t r = 0; r < e.Count; ++r)
   {
-    for (const Property& p : e.Properties)
+    for (size_t i = 0; i < e.Properties.size(); ++i)
     {
+      const Property& p = e.Properties[i];
       if (!p.IsList)
       {
         if (!this->In.Skip(TypeSize(p.Type)))
@@ -696,11 +750,60 @@ bool PLYParser::SkipElement(const Element& e)
         return this->Fail("negative count " + std::to_string(n) + " of list " + Quote(p.Name) +
           " in " + Printable(e.Name) + " " + std::to_string(r + 1));
       }
-      if (!this->In.Skip(static_cast<uint64_t>(n) * TypeSize(p.Type)))
+      // Where the items must end: before the rest of e's rows at their least, and the reserve.
+      const uint64_t at = this->In.Position();
+      const uint64_t item = TypeSize(p.Type);
+      const uint64_t limit =
+        blame ? size - reserve - (e.Count - r - 1) * rest[0] - rest[i + 1] : size;
+      if (static_cast<uint64_t>(n) > (limit - std::min(at, limit)) / item)
+      {
+        if (!blame)
+        {
+          return this->FailEnd(e, r, "binary data from byte " + std::to_string(start));
+        }
+        return this->Fail("list " + Quote(p.Name) + " of " + Printable(e.Name) + " " +
+          std::to_string(r + 1) + " of " + std::to_string(e.Count) + " counts " +
+          std::to_string(n) + " items of " + std::to_string(item) + " bytes from byte " +
+          std::to_string(at) + ": they run into the data of " + after +
+          ", at least " + std::to_string(reserve) + " of the file's " + std::to_string(size) +
+          " bytes (a wrong list count)");
+      }
+      if (!this->In.Skip(static_cast<uint64_t>(n) * item))
       {
         return this->FailEnd(e, r, "binary data from byte " + std::to_string(start));
       }
     }
+  }
+  return true;
+}
+
+// The elements after the vertices are never read, but their rows must fit in the file at their
+// least (LeastBytes): a count beyond the file is as much an error there as in the vertex element.
+// Elements up to the vertices that do not fit are found where they are read.
+bool PLYParser::CheckElementBytes(const Element& vertex)
+{
+  const bool ascii = this->FileFormat == Format::Ascii;
+  const uint64_t start = this->In.Position();
+  const uint64_t room = this->In.FileSize() - std::min(start, this->In.FileSize());
+  uint64_t need = 0;
+  bool afterVertex = false;
+  for (const Element& e : this->Elements)
+  {
+    need = SaturatedSum(need, LeastBytes(e, ascii));
+    // ASCII: the file's last value needs no separator after it.
+    if (afterVertex && need - (ascii && need > 0 ? 1 : 0) > room)
+    {
+      const std::string least = need == std::numeric_limits<uint64_t>::max()
+        ? "more than 2^64 - 2"
+        : "at least " + std::to_string(need);
+      return this->Fail("element " + Quote(e.Name) + " after the vertices declares " +
+          std::to_string(e.Count) + " rows of at least " + std::to_string(LeastRowBytes(e, ascii)) +
+          " bytes" + (ascii ? " (a value and a separator per property)" : "") +
+          ": the elements up to it take " + least + " bytes, but " + std::to_string(room) +
+          " bytes follow end_header",
+        e.Line);
+    }
+    afterVertex = afterVertex || &e == &vertex;
   }
   return true;
 }
@@ -1056,6 +1159,83 @@ bool PLYParser::ReadBinaryVertices(const Element& vertex)
   return true;
 }
 
+// The values of row r of element e on an ASCII line (this->Tokens, line this->Line), as its
+// properties declare them: each scalar, each list's count and that many items, nothing more.
+// The vertex element's scalars go to `row` at their targets' offsets; a row of another element
+// (row nullptr) is only checked.
+bool PLYParser::ParseAsciiRow(const Element& e, uint64_t r, char* row)
+{
+  auto which = [&e, r]() {
+    return Printable(e.Name) + " " + std::to_string(r + 1) + " of " + std::to_string(e.Count);
+  };
+  char scratch[8];
+  size_t next = 0; // token
+  for (size_t i = 0; i < e.Properties.size(); ++i)
+  {
+    const Property& p = e.Properties[i];
+    auto missing = [&]() {
+      return this->Fail("too few values for " + which() + ": no value for property " +
+          Quote(p.Name) + " (the line has " + std::to_string(this->Tokens.size()) + ")",
+        this->Line);
+    };
+    auto invalid = [&](Parse result, std::string_view token, PlyType type) {
+      return this->Fail(
+        ParseMessage(result, token, type) + " in property " + Quote(p.Name) + " of " + which(),
+        this->Line);
+    };
+    if (next >= this->Tokens.size())
+    {
+      return missing();
+    }
+    const std::string_view token = this->Tokens[next++];
+    if (!p.IsList)
+    {
+      char* dst = row ? row + this->Targets[this->TargetOfProperty[i]].Offset : scratch;
+      const Parse result = ParseInto(p.Type, token, dst);
+      if (result != Parse::Ok)
+      {
+        return invalid(result, token, p.Type);
+      }
+      continue;
+    }
+    const Parse result = ParseInto(p.CountType, token, scratch);
+    if (result != Parse::Ok)
+    {
+      return invalid(result, token, p.CountType);
+    }
+    const int64_t items = LoadCount(p.CountType, scratch, false);
+    if (items < 0)
+    {
+      return this->Fail("negative list count " + std::to_string(items) + " in property " +
+          Quote(p.Name) + " of " + which(),
+        this->Line);
+    }
+    if (static_cast<uint64_t>(items) > this->Tokens.size() - next)
+    {
+      return this->Fail("list count " + std::to_string(items) + " in property " + Quote(p.Name) +
+          " of " + which() + ", but the line has " + std::to_string(this->Tokens.size() - next) +
+          " values after it",
+        this->Line);
+    }
+    for (int64_t k = 0; k < items; ++k)
+    {
+      const std::string_view item = this->Tokens[next++];
+      const Parse itemResult = ParseInto(p.Type, item, scratch);
+      if (itemResult != Parse::Ok)
+      {
+        return invalid(itemResult, item, p.Type);
+      }
+    }
+  }
+  if (next != this->Tokens.size())
+  {
+    return this->Fail("too many values for " + which() + " (" +
+        std::to_string(this->Tokens.size()) + ", " + std::to_string(next) + " expected)",
+      this->Line);
+  }
+  return true;
+}
+
 bool PLYParser::ReadAsciiVertices(const Element& vertex)
 {
   const size_t rowSize = this->PackedRowSize;
@@ -1063,16 +1243,12 @@ bool PLYParser::ReadAsciiVertices(const Element& vertex)
   const vtkIdType rowsPerChunk = static_cast<vtkIdType>(std::max<size_t>(1, ChunkBytes / rowSize));
   std::vector<char> chunk(static_cast<size_t>(std::min(n, rowsPerChunk)) * rowSize);
   std::string_view line;
-  char scratch[8];
   for (vtkIdType first = 0; first < n; first += rowsPerChunk)
   {
     const vtkIdType rows = std::min(rowsPerChunk, n - first);
     for (vtkIdType r = 0; r < rows; ++r)
     {
       const vtkIdType v = first + r;
-      auto which = [v, n]() {
-        return "vertex " + std::to_string(v + 1) + " of " + std::to_string(n);
-      };
       if (v >= this->Allocated || !this->NextDataLine(line))
       {
         return this->In.TooLong()
@@ -1080,67 +1256,10 @@ bool PLYParser::ReadAsciiVertices(const Element& vertex)
           : this->FailEnd(vertex, v, "ASCII data, after line " + std::to_string(this->Line));
       }
       Split(line, this->Tokens);
-      char* row = chunk.data() + static_cast<size_t>(r) * rowSize;
-      size_t next = 0; // token
-      for (size_t i = 0; i < vertex.Properties.size(); ++i)
+      if (!this->ParseAsciiRow(
+            vertex, static_cast<uint64_t>(v), chunk.data() + static_cast<size_t>(r) * rowSize))
       {
-        const Property& p = vertex.Properties[i];
-        auto missing = [&]() {
-          return this->Fail("too few values for " + which() + ": no value for property " +
-              Quote(p.Name) + " (the line has " + std::to_string(this->Tokens.size()) + ")",
-            this->Line);
-        };
-        auto invalid = [&](Parse result, std::string_view token, PlyType type) {
-          return this->Fail(
-            ParseMessage(result, token, type) + " in property " + Quote(p.Name) + " of " + which(),
-            this->Line);
-        };
-        if (next >= this->Tokens.size())
-        {
-          return missing();
-        }
-        const std::string_view token = this->Tokens[next++];
-        if (!p.IsList)
-        {
-          const Parse result =
-            ParseInto(p.Type, token, row + this->Targets[this->TargetOfProperty[i]].Offset);
-          if (result != Parse::Ok)
-          {
-            return invalid(result, token, p.Type);
-          }
-          continue;
-        }
-        const Parse result = ParseInto(p.CountType, token, scratch);
-        if (result != Parse::Ok)
-        {
-          return invalid(result, token, p.CountType);
-        }
-        const int64_t items = LoadCount(p.CountType, scratch, false);
-        if (items < 0)
-        {
-          return this->Fail("negative list count " + std::to_string(items) + " in property " +
-              Quote(p.Name) + " of " + which(),
-            this->Line);
-        }
-        for (int64_t k = 0; k < items; ++k)
-        {
-          if (next >= this->Tokens.size())
-          {
-            return missing();
-          }
-          const std::string_view item = this->Tokens[next++];
-          const Parse itemResult = ParseInto(p.Type, item, scratch);
-          if (itemResult != Parse::Ok)
-          {
-            return invalid(itemResult, item, p.Type);
-          }
-        }
-      }
-      if (next != this->Tokens.size())
-      {
-        return this->Fail("too many values for " + which() + " (" +
-            std::to_string(this->Tokens.size()) + ", " + std::to_string(next) + " expected)",
-          this->Line);
+        return false;
       }
     }
     this->Decode(chunk.data(), rows, first, false);
@@ -1172,10 +1291,29 @@ bool PLYParser::Read(vtkPolyData* output, bool createVertexCells, int piece, int
   {
     return this->Fail("too many vertices (" + std::to_string(vertex->Count) + ")");
   }
-  // Elements after the vertex element are never read.
-  for (auto e = this->Elements.begin(); e != vertex; ++e)
+  if (!this->CheckElementBytes(*vertex))
   {
-    if (!this->SkipElement(*e))
+    return false;
+  }
+  // The elements before the vertices, each skipped knowing the least bytes of those after it
+  // (a list count that runs into them is the skipped element's). Elements after the vertex
+  // element are never read (CheckElementBytes: their rows fit in the file at their least).
+  const size_t before = static_cast<size_t>(vertex - this->Elements.begin());
+  std::vector<uint64_t> reserve(before + 1, 0); // [i]: the least bytes of elements i, i + 1, ...
+  for (auto e = this->Elements.begin() + before; e != this->Elements.end(); ++e)
+  {
+    reserve[before] = SaturatedSum(reserve[before], LeastBytes(*e, false));
+  }
+  for (size_t i = before; i-- > 0;)
+  {
+    reserve[i] = SaturatedSum(reserve[i + 1], LeastBytes(this->Elements[i], false));
+  }
+  for (size_t i = 0; i < before; ++i)
+  {
+    const Element& next = this->Elements[i + 1];
+    const std::string after = "the " + Printable(next.Name) + " element" +
+      (i + 2 < this->Elements.size() ? " and those after it" : "");
+    if (!this->SkipElement(this->Elements[i], reserve[i + 1], after))
     {
       return false;
     }

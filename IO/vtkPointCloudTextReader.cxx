@@ -691,6 +691,53 @@ struct TextParse
   }
 };
 
+// The error for a NUL byte on line `line`, at offset `byte` (counting from 0): no text holds one.
+Problem BinaryData(long line, long long byte)
+{
+  return Problem{ vtkErrorCode::FileFormatError, line,
+    "binary data (a NUL byte at byte " + std::to_string(byte) + "), not a text file" };
+}
+
+// What the file's first bytes say against reading it as text: UTF-16 (a byte order mark, or a
+// NUL in every other byte of the first line: each character would read as two, the second a
+// NUL), or binary data (a NUL byte anywhere in `start`, as in a LAS or PLY file given the wrong
+// extension). Looked at before any line is parsed, so that binary data is named as such rather
+// than as a header without x, y and z. Code NoError when the start reads as text.
+Problem SniffText(std::string_view start)
+{
+  const char* const first = start.data();
+  if (start.substr(0, 3) == "\xEF\xBB\xBF")
+  {
+    start.remove_prefix(3); // a UTF-8 byte order mark
+  }
+  const std::string_view line = start.substr(0, start.find('\n'));
+  // UTF-16 without a byte order mark: NUL bytes on one side only (the high bytes of Latin text,
+  // little- or big-endian), at least half of that side's bytes; binary data has NUL bytes on
+  // both sides, or a few anywhere.
+  size_t nul[2] = { 0, 0 };
+  for (size_t i = 0; i < line.size(); ++i)
+  {
+    nul[i % 2] += line[i] == '\0';
+  }
+  const size_t sides[2] = { (line.size() + 1) / 2, line.size() / 2 };
+  const bool utf16 = start.substr(0, 2) == "\xFF\xFE" || start.substr(0, 2) == "\xFE\xFF" ||
+    (line.size() >= 4 &&
+      ((nul[0] == 0 && nul[1] >= 2 && 2 * nul[1] >= sides[1]) ||
+        (nul[1] == 0 && nul[0] >= 2 && 2 * nul[0] >= sides[0])));
+  if (utf16)
+  {
+    return Problem{ vtkErrorCode::FileFormatError, 1,
+      "the file is UTF-16 text; save it as UTF-8 or ASCII (iconv -f UTF-16 -t UTF-8)" };
+  }
+  const size_t at = start.find('\0');
+  if (at != std::string_view::npos)
+  {
+    const long number = 1 + static_cast<long>(std::count(start.begin(), start.begin() + at, '\n'));
+    return BinaryData(number, static_cast<long long>(at + (start.data() - first)));
+  }
+  return Problem{};
+}
+
 // The format of AUTOMATIC, from the file name's extension.
 int FormatOfFile(const std::string& file)
 {
@@ -747,9 +794,24 @@ int vtkPointCloudTextReader::RequestData(
   const double fileSize = std::max(1.0, static_cast<double>(in.tellg()));
   in.seekg(0, std::ios::beg);
 
+  // UTF-16 and binary data are told from the first 64 KiB, before any line is parsed.
+  {
+    std::string start(65536, '\0');
+    in.read(&start[0], static_cast<std::streamsize>(start.size()));
+    start.resize(static_cast<size_t>(in.gcount()));
+    const Problem sniffed = SniffText(start);
+    if (sniffed.Code != vtkErrorCode::NoError)
+    {
+      return fail(sniffed);
+    }
+    in.clear();
+    in.seekg(0, std::ios::beg);
+  }
+
   TextParse parse(this->Format == AUTOMATIC ? FormatOfFile(file) : this->Format);
   std::string text;
   long lineNumber = 0;
+  long long lineStart = 0; // the byte the line starts at
   while (std::getline(in, text))
   {
     ++lineNumber;
@@ -758,15 +820,13 @@ int vtkPointCloudTextReader::RequestData(
     {
       line.remove_prefix(3); // a UTF-8 byte order mark
     }
-    // UTF-16 (a byte order mark, or a NUL in every other byte of plain text): each character
-    // would read as two, the second a NUL.
-    if (lineNumber == 1 &&
-      (line.substr(0, 2) == "\xFF\xFE" || line.substr(0, 2) == "\xFE\xFF" ||
-        (line.size() >= 4 && (line[1] == '\0' || line[0] == '\0'))))
+    // A NUL past the start that SniffText() saw.
+    const size_t nul = text.find('\0');
+    if (nul != std::string::npos)
     {
-      return fail(Problem{ vtkErrorCode::FileFormatError, lineNumber,
-        "the file is UTF-16 text; save it as UTF-8 or ASCII (iconv -f UTF-16 -t UTF-8)" });
+      return fail(BinaryData(lineNumber, lineStart + static_cast<long long>(nul)));
     }
+    lineStart += static_cast<long long>(text.size()) + 1;
     if (!line.empty() && line.back() == '\r')
     {
       line.remove_suffix(1);

@@ -268,6 +268,14 @@ void Malformed()
   };
   std::string wrongSignature = good;
   wrongSignature[3] = 'G';
+  // The bytes of a file with a value written over the field at byte `at`.
+  auto patched = [](std::string bytes, size_t at, auto value) {
+    std::memcpy(&bytes[at], &value, sizeof(value));
+    return bytes;
+  };
+  const std::string withVlr = with([](File& f) { f.Vlr = true; }); // points from byte 291
+  const std::string las13 = with([](File& f) { f.Minor = 3; });      // points from byte 235
+  const std::string las14 = with([](File& f) { f.Minor = 4; });      // points from byte 375
   std::string version2 = good;
   version2[24] = 2;
   const Case cases[] = {
@@ -297,6 +305,29 @@ void Malformed()
     { "count-fewer.las", with([](File& f) { f.DeclaredPoints = 2; }),
       "the header declares 2 points of 28 bytes from byte 227, but 3 follow there: a wrong point "
       "count" },
+    // The VLRs must end by the offset to point data: their count (byte 100), a length (+20).
+    { "vlr-count.las", patched(withVlr, 100, uint32_t(2)),
+      "VLR 2 of 2 (from byte 291): its 54-byte header runs past the offset to point data (byte "
+      "291)" },
+    { "vlr-count-huge.las", patched(good, 100, uint32_t(4294967295u)),
+      "VLR 1 of 4294967295 (from byte 227): its 54-byte header runs past the offset to point "
+      "data (byte 227)" },
+    { "vlr-length.las", patched(withVlr, 227 + 20, uint16_t(1000)),
+      "VLR 1 of 1 (from byte 227): its header and the 1000 bytes of data it declares end at byte "
+      "1281, past the offset to point data (byte 291)" },
+    { "format6-1.2.las", with([](File& f) { f.Format = 6; }),
+      "point data record format 6 needs LAS 1.4 (the file is LAS 1.2)" },
+    { "legacy-count.las", patched(las14, 107, uint32_t(2)),
+      "the legacy point count 2 is neither 0 nor the LAS 1.4 point count 3" },
+    { "evlr-in-points.las", patched(las14, 235, uint64_t(400)),
+      "the header says the first extended VLR starts at byte 400, before the end of the point "
+      "data (bytes 375 to 459)" },
+    { "evlr-past-end.las", patched(las14, 235, uint64_t(100000)),
+      "the header says the first extended VLR starts at byte 100000, past the end of the file "
+      "(459 bytes)" },
+    { "waveform-in-points.las", patched(las13, 227, uint64_t(300)),
+      "the header says the waveform data packet record starts at byte 300, before the end of the "
+      "point data (bytes 235 to 319)" },
   };
   for (const Case& c : cases)
   {
@@ -323,6 +354,28 @@ void Malformed()
   ReadResult r = Read(path);
   FEATUREPOINTS_CHECK(r.Message.find("the point data cannot start at byte 100000") != std::string::npos,
     "offset: [%s]", r.Message.c_str());
+
+  // What the header may say: a legacy count of 0 in LAS 1.4, or the legacy count alone (a 64-bit
+  // count of 0); an extended VLR start at the end of the points; bytes after the last VLR.
+  const struct
+  {
+    const char* Name;
+    std::string Bytes;
+  } fine[] = {
+    { "legacy-zero.las", patched(las14, 107, uint32_t(0)) },
+    { "legacy-only.las", patched(las14, 247, uint64_t(0)) },
+    { "evlr-after-points.las", patched(las14, 235, uint64_t(459)) },
+    { "vlr-short.las", patched(withVlr, 227 + 20, uint16_t(4)) },
+  };
+  for (const auto& c : fine)
+  {
+    const std::string at = PathOf(c.Name);
+    Spit(at, c.Bytes);
+    ReadResult read = Read(at);
+    FEATUREPOINTS_CHECK(read.Errors.empty() && read.Cloud->GetNumberOfPoints() == 3,
+      "%s: %lld points, [%s]", c.Name, static_cast<long long>(read.Cloud->GetNumberOfPoints()),
+      read.Message.c_str());
+  }
 }
 } // namespace
 

@@ -276,6 +276,13 @@ void KnownCompressed()
         Bytes(uint32_t(lzf.size())) + Bytes(uint32_t(1200000000)) + lzf,
       "the compressed data cannot hold 100000000 points" },
     { "short-sizes.pcd", header + "\x17\x00", "the file ends in the sizes of the compressed data" },
+    // No LZF byte for a point of 3 bytes: within the bound of 8 bytes, but nothing to decompress.
+    { "empty-compressed.pcd",
+      "VERSION 0.7\nFIELDS x y z\nSIZE 1 1 1\nTYPE U U U\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\n"
+      "POINTS 1\nDATA binary_compressed\n" +
+        Bytes(uint32_t(0)) + Bytes(uint32_t(3)),
+      "the compressed data declares 0 bytes (at byte 108) for 1 points of 3 bytes (3 bytes "
+      "uncompressed)" },
   };
   for (const Case& c : cases)
   {

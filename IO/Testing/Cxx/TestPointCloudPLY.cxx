@@ -617,6 +617,51 @@ void TestErrors()
     "property float y\nproperty float z\nend_header\n" +
       std::string(24, '\0'),
     "ends in vertex 3 of 4000000000");
+  // An element before the vertices: its ASCII rows are checked as they are skipped, and in
+  // binary a list count that runs into the vertex data is named, not the vertices.
+  const std::string faceFirst = "element face 1\nproperty list uint int vertex_indices\n"
+                                "element vertex 3\nproperty float x\nproperty float y\n"
+                                "property float z\nend_header\n";
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  ExpectError("negative list count before the vertices", "face_negative.ply",
+    "ply\nformat ascii 1.0\nelement face 1\nproperty list int int vertex_indices\n"
+    "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+    "-3 0 1 2\n" +
+      vertices,
+    "negative list count -3 in property 'vertex_indices' of face 1 of 1", 10);
+  ExpectError("huge list count before the vertices", "face_huge.ply",
+    "ply\nformat ascii 1.0\n" + faceFirst + "4294967295 0 1 2\n" + vertices,
+    "list count 4294967295 in property 'vertex_indices' of face 1 of 1, but the line has 3 "
+    "values after it",
+    10);
+  ExpectError("extra list item before the vertices", "face_long.ply",
+    "ply\nformat ascii 1.0\n" + faceFirst + "3 0 1 2 5\n" + vertices,
+    "too many values for face 1 of 1 (5, 4 expected)", 10);
+  ExpectError("non-integer list item before the vertices", "face_item.ply",
+    "ply\nformat ascii 1.0\n" + faceFirst + "3 0 1.5 2\n" + vertices,
+    "'1.5' is not an integer (type int) in property 'vertex_indices' of face 1 of 1", 10);
+  {
+    std::string bytes = "ply\nformat binary_little_endian 1.0\nelement face 1\n"
+                        "property list uchar int vertex_indices\nelement vertex 3\n"
+                        "property float x\nproperty float y\nproperty float z\nend_header\n";
+    const size_t header = bytes.size();
+    bytes += '\xff'; // 255 items: the 3 written and the vertices after them
+    bytes += std::string(12 + 36, '\0');
+    ExpectError("list running into the vertices", "face_into_vertices.ply", bytes,
+      "list 'vertex_indices' of face 1 of 1 counts 255 items of 4 bytes from byte " +
+        std::to_string(header + 1) + ": they run into the data of the vertex element, at least 36 "
+        "of the file's " + std::to_string(bytes.size()) + " bytes (a wrong list count)");
+  }
+  // Elements after the vertices are not read, but must fit in the file.
+  ExpectError("huge count after the vertices", "face_count_after.ply",
+    "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+    "property float y\nproperty float z\nelement face 4611686018427387904\n"
+    "property list uchar int vertex_indices\nend_header\n" +
+      std::string(12 + 13, '\0'),
+    "element 'face' after the vertices declares 4611686018427387904 rows of at least 1 bytes: "
+    "the elements up to it take at least 4611686018427387916 bytes, but 25 bytes follow "
+    "end_header",
+    7);
 
   // A valid binary file cut in the header, right after it, in a vertex, one byte short.
   vtkSmartPointer<vtkPolyData> cloud = MakeCloud(50, 3, false);

@@ -159,6 +159,36 @@ int TestPointCloudText(int argc, char* argv[])
   ExpectError(folder, "noxyz.csv", "a,b,c\n1,2,3\n", "names no x, y and z");
   ExpectError(folder, "utf16.csv", std::string("\xFF\xFEx\0,\0y\0,\0z\0\n\0", 14),
     ":1: the file is UTF-16 text");
+  // Without a byte order mark: a NUL in every other byte, little- or big-endian.
+  ExpectError(folder, "utf16le.csv", std::string("x\0,\0y\0,\0z\0\r\0\n\0001\0", 16),
+    ":1: the file is UTF-16 text");
+  ExpectError(folder, "utf16be.csv", std::string("\0x\0,\0y\0,\0z\0\r\0\n\0001", 16),
+    ":1: the file is UTF-16 text");
+  // Binary data with a text extension: named as such, not as UTF-16, CR line ends or a header.
+  {
+    std::string bytes(256, '\0');
+    for (int b = 0; b < 256; ++b)
+    {
+      bytes[b] = static_cast<char>(b);
+    }
+    ExpectError(
+      folder, "bytes.xyz", bytes, ":1: binary data (a NUL byte at byte 0), not a text file");
+  }
+  ExpectError(folder, "las.xyz", std::string("LASF\0\0\x01\0\r\x02\0\0", 12),
+    ":1: binary data (a NUL byte at byte 4), not a text file");
+  ExpectError(folder, "random.xyz", std::string("\x81\x92 x\xff\n\x01\0\x02", 9),
+    ":2: binary data (a NUL byte at byte 7), not a text file");
+  {
+    // A NUL past the start the reader looks at first: found on its line.
+    std::string text;
+    while (text.size() < 70000)
+    {
+      text += "1 2 3\n";
+    }
+    const std::string at = std::to_string(text.size() + 3);
+    ExpectError(folder, "late-nul.xyz", text + std::string("4 5\0 6\n", 8),
+      ":11668: binary data (a NUL byte at byte " + at + "), not a text file");
+  }
   ExpectError(folder, "twox.csv", "x,y,z,X\n1,2,3,4\n",
     ":1: the header names the coordinate 'x' more than once (columns 1 and 4)");
   // A first line written like numbers is data with a bad field, not a header without x, y, z.

@@ -515,7 +515,8 @@ void FuzzedFiles()
     "names like columns: CSV header " + header);
   ExpectSuccess("names like columns, read back", { Path("names.csv"), Path("names-again.csv"),
                                                    "--quiet" });
-  // A NUL inside a number and a 5,000-digit field: the message stays one short, whole line.
+  // A NUL inside a number (binary data, not text) and a 5,000-digit field: the message stays one
+  // short, whole line.
   const size_t fifth = [&]() {
     size_t at = 0;
     for (int line = 0; line < 4; ++line)
@@ -527,7 +528,9 @@ void FuzzedFiles()
   std::string nul = body;
   nul.insert(fifth + 1, 1, '\0');
   Spit(Path("nul.xyz"), nul);
-  ExpectFailure("a NUL in a number", { Path("nul.xyz"), Path("o.vtp") }, 1, "\\x00");
+  ExpectFailure("a NUL in a number", { Path("nul.xyz"), Path("o.vtp") }, 1,
+    "nul.xyz:5: binary data (a NUL byte at byte " + std::to_string(fifth + 1) +
+      "), not a text file");
   Spit(Path("long.xyz"), std::string(5000, '1') + " 0 0\n" + body);
   ExpectFailure("a 5,000-digit field", { Path("long.xyz"), Path("o.vtp") }, 1, "1111... (500");
   // An output name within 8 bytes of the longest a folder takes: the temporary file gets a
@@ -991,6 +994,15 @@ void LegacyFiles()
   // the value, are named.
   ExpectFailure("legacy VTK cut in its body", { Path("cut-body.vtk"), Path("o.vtp") }, 1,
     "cut-body.vtk: the POINTS line declares 10 points; the file ends after 3 of them");
+  // More values than POINTS declares: VTK says "Unrecognized keyword: 0".
+  Spit(Path("more-points.vtk"), header + "POINTS 2 float\n0 0 0\n1 0 0\n0 1 0\n");
+  ExpectFailure("legacy VTK with more points than declared", { Path("more-points.vtk"),
+    Path("o.vtp") }, 1,
+    "more-points.vtk:8: the POINTS block holds more than 2 x 3 values (a wrong POINTS count)");
+  Spit(Path("more-values.vtk"), header + "POINTS 2 float\n0 0 0 1 0 0 0 1 0\n");
+  ExpectFailure("legacy VTK with more values on a line", { Path("more-values.vtk"),
+    Path("o.vtp") }, 1,
+    "more-values.vtk:6: the POINTS block holds more than 2 x 3 values (a wrong POINTS count)");
   Spit(Path("nan.vtk"), header + "POINTS 4 float\n0 0 0 1 nan 0 0 1 0\n0 0 1\n");
   ExpectFailure("legacy VTK with a nan token", { Path("nan.vtk"), Path("o.vtp") }, 1,
     "nan.vtk:6: coordinate 2 of point 2 ('nan') is not a finite number");
