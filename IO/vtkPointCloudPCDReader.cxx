@@ -5,8 +5,11 @@
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointCloudIO.h"
 #include "vtkPointData.h"
@@ -324,6 +327,7 @@ private:
   bool ReadCompressedSizes();
   bool ReadCompressed();
   bool RemoveInvalidPoints(vtkPolyData* output);
+  bool RecordFilePoints(vtkPolyData* output, const std::vector<unsigned char>& keep);
 
   std::string FileName;
   Input In;
@@ -340,6 +344,9 @@ private:
   std::vector<std::string> Sizes, Types, Counts;
   bool HasWidth = false, HasHeight = false, HasPoints = false;
   uint32_t CompressedBytes = 0;
+  // ASCII data: the points whose line is not the one after the previous point's (blank lines
+  // before them), with that line; every other point's line follows from the last such point.
+  std::vector<std::pair<vtkIdType, int>> LineRuns;
 };
 
 bool PCDParser::ReadHeader()
@@ -919,6 +926,11 @@ bool PCDParser::ReadAscii()
         return this->FailEnd(
           static_cast<uint64_t>(p), "ASCII data, after line " + std::to_string(this->Line));
       }
+      if (this->LineRuns.empty() ||
+        this->Line - this->LineRuns.back().second != p - this->LineRuns.back().first)
+      {
+        this->LineRuns.emplace_back(p, this->Line);
+      }
       Split(line, tokens);
       const std::string which = "point " + std::to_string(p + 1) + " of " + std::to_string(n);
       if (tokens.size() != this->ValuesPerPoint)
@@ -1051,6 +1063,51 @@ bool PCDParser::RemoveInvalidPoints(vtkPolyData* output)
     array->SetNumberOfTuples(kept);
   }
   output->GetPoints()->Modified();
+  return this->RecordFilePoints(output, keep);
+}
+
+// The file's numbering of the points kept by RemoveInvalidPoints, as field data of the output:
+// `FilePointIds`, each point's index in the file (from 0), and for ASCII data `FileLines`, its
+// line, so that a message about an output point can name the point as the file holds it.
+bool PCDParser::RecordFilePoints(vtkPolyData* output, const std::vector<unsigned char>& keep)
+{
+  const vtkIdType kept = output->GetNumberOfPoints();
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("FilePointIds");
+  vtkNew<vtkIdTypeArray> lines;
+  lines->SetName("FileLines");
+  const bool ascii = this->Data == Encoding::Ascii;
+  ids->SetNumberOfValues(kept);
+  lines->SetNumberOfValues(ascii ? kept : 0);
+  if (ids->GetNumberOfValues() != kept || lines->GetNumberOfValues() != (ascii ? kept : 0))
+  {
+    return this->Fail(
+      "cannot allocate memory for the file's ids of " + std::to_string(kept) + " points");
+  }
+  size_t run = 0;
+  vtkIdType j = 0;
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(keep.size()); ++i)
+  {
+    if (!keep[i])
+    {
+      continue;
+    }
+    ids->SetValue(j, i);
+    if (ascii)
+    {
+      while (run + 1 < this->LineRuns.size() && this->LineRuns[run + 1].first <= i)
+      {
+        ++run;
+      }
+      lines->SetValue(j, this->LineRuns[run].second + (i - this->LineRuns[run].first));
+    }
+    ++j;
+  }
+  output->GetFieldData()->AddArray(ids);
+  if (ascii)
+  {
+    output->GetFieldData()->AddArray(lines);
+  }
   return true;
 }
 

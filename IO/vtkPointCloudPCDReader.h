@@ -23,7 +23,10 @@
  *   double). Fields named `_` (PCL's padding) are skipped.
  * - An organized cloud (HEIGHT > 1) is read as plain points, row after row; its invalid points
  *   (PCL marks them with a NaN coordinate) are skipped, with a warning that gives their number
- *   (GetNumberOfSkippedPoints()). So is any point with an infinite coordinate.
+ *   (GetNumberOfSkippedPoints()). So is any point with an infinite coordinate. When points are
+ *   skipped, the output's field data holds `FilePointIds` (vtkIdTypeArray, one value per output
+ *   point: its index in the file, from 0) and, for DATA ascii, `FileLines` (its line, from 1),
+ *   so that a message about an output point can name it as the file numbers it.
  * - In ASCII data, a value of an F 4 field named `rgb` or `rgba` written as an integer (as PCL
  *   writes it) is the packed colour's bits, not a number to convert.
  *

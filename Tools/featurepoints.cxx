@@ -20,6 +20,7 @@
 #include "vtkFeaturePointExtraction.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkLogger.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
@@ -1822,7 +1823,46 @@ private:
     {
       Fail(ExitFailure, s.Input + ": the file holds no point");
     }
+    this->TakeFilePoints();
     this->CheckFinite(0);
+  }
+
+  // A PCD file whose points with a NaN or infinite coordinate were skipped: the file's index (and
+  // for ASCII data the line) of each point read, as the reader gives them in the cloud's field
+  // data, taken out of it so that the output does not carry them.
+  void TakeFilePoints()
+  {
+    if (vtkPointCloudIO::GetExtension(this->S.Input) != "pcd")
+    {
+      return;
+    }
+    vtkFieldData* fd = this->Cloud->GetFieldData();
+    const vtkIdType n = this->Cloud->GetNumberOfPoints();
+    auto take = [fd, n](const char* name) {
+      vtkSmartPointer<vtkIdTypeArray> array = vtkIdTypeArray::SafeDownCast(fd->GetArray(name));
+      fd->RemoveArray(name);
+      return array && array->GetNumberOfValues() == n ? array : nullptr;
+    };
+    this->FilePointIds = take("FilePointIds");
+    this->FileLines = take("FileLines");
+  }
+
+  // Point i of the cloud as a message names it: "FILE: point N (counting from 0)", with the
+  // file's numbering where the reader skipped points before it ("FILE:LINE: point N ...").
+  std::string InputPoint(vtkIdType i) const
+  {
+    const vtkIdType inFile = this->FilePointIds ? this->FilePointIds->GetValue(i) : -1;
+    if (inFile < 0)
+    {
+      return this->S.Input + ": point " + std::to_string(this->FirstPoint + i) +
+        " (counting from 0)";
+    }
+    const vtkIdType skipped = inFile - i;
+    return this->S.Input +
+      (this->FileLines ? ":" + std::to_string(this->FileLines->GetValue(i)) : std::string()) +
+      ": point " + std::to_string(inFile) + " (counting from 0, as the file numbers its points; " +
+      std::to_string(skipped) + " point" + (skipped == 1 ? "" : "s") +
+      " with a NaN or infinite coordinate before it skipped)";
   }
 
   // Every point of the cloud (the piece that starts at point `first` of the file) is finite.
@@ -1864,8 +1904,7 @@ private:
       if (FirstNonFinite(array, i, c, v))
       {
         std::ostringstream m;
-        m << this->S.Input << ": point " << this->FirstPoint + i
-          << " (counting from 0): point array '"
+        m << this->InputPoint(i) << ": point array '"
           << vtkPointCloudIO::MessageText(array->GetName() ? array->GetName() : "(no name)") << "'"
           << (array->GetNumberOfComponents() > 1 ? " component " + std::to_string(c)
                                                  : std::string())
@@ -2383,6 +2422,8 @@ private:
   vtkSmartPointer<vtkPointSet> Cloud; // under mpiexec: this process's piece
   vtkIdType TotalPoints = 0;          // the whole cloud's points
   vtkIdType FirstPoint = 0;           // where this process's piece starts in the file
+  vtkSmartPointer<vtkIdTypeArray> FilePointIds; // see TakeFilePoints
+  vtkSmartPointer<vtkIdTypeArray> FileLines;
   bool ByPieces = false;              // each process read its share of the file
   vtkSmartPointer<vtkFeaturePointDetector> Filter;
 #ifdef FEATUREPOINTS_HAVE_MPI

@@ -12,6 +12,7 @@
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
@@ -327,11 +328,48 @@ void Organized()
     FEATUREPOINTS_CHECK(Component(r.Cloud, "curvature", i, 0) == kept[i], "organized: curvature %d", i);
   }
   FEATUREPOINTS_CHECK(r.Cloud->GetNumberOfVerts() == 4, "organized: 4 vertex cells");
-  // Through vtkPointCloudIO: a cloud without the invalid points, no error.
+  // The file's index of each point read, in field data; binary data has no lines.
+  const vtkIdType fileIds[4] = { 0, 2, 4, 5 };
+  auto* ids = vtkIdTypeArray::SafeDownCast(r.Cloud->GetFieldData()->GetArray("FilePointIds"));
+  FEATUREPOINTS_CHECK(ids && ids->GetNumberOfValues() == 4 && ids->GetValue(0) == fileIds[0] &&
+      ids->GetValue(1) == fileIds[1] && ids->GetValue(2) == fileIds[2] &&
+      ids->GetValue(3) == fileIds[3] && !r.Cloud->GetFieldData()->GetArray("FileLines"),
+    "organized: FilePointIds 0 2 4 5, no FileLines");
+  // Through vtkPointCloudIO: a cloud without the invalid points, no error, the ids kept.
   std::string error;
   vtkSmartPointer<vtkPointSet> io = vtkPointCloudIO::Read(path, error);
   FEATUREPOINTS_CHECK(
     io && io->GetNumberOfPoints() == 4, "organized through vtkPointCloudIO: %s", error.c_str());
+  FEATUREPOINTS_CHECK(io && io->GetFieldData()->GetArray("FilePointIds"),
+    "organized through vtkPointCloudIO: FilePointIds kept");
+
+  // ASCII, with blank lines among the points: each point's line as the file numbers it.
+  const std::string asciiPath = PathOf("organized-ascii.pcd");
+  Spit(asciiPath,
+    "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nHEIGHT 2\nPOINTS 6\n"
+    "DATA ascii\n0 0 0\nnan nan nan\n\n1 0 0\n0 1 nan\n\n\n1 1 1\n2 2 2\n");
+  ReadResult a = Read(asciiPath);
+  auto* asciiIds =
+    vtkIdTypeArray::SafeDownCast(a.Cloud->GetFieldData()->GetArray("FilePointIds"));
+  auto* lines = vtkIdTypeArray::SafeDownCast(a.Cloud->GetFieldData()->GetArray("FileLines"));
+  const vtkIdType fileLines[4] = { 9, 12, 16, 17 };
+  bool same = asciiIds && lines && asciiIds->GetNumberOfValues() == 4 &&
+    lines->GetNumberOfValues() == 4;
+  for (int i = 0; same && i < 4; ++i)
+  {
+    same = asciiIds->GetValue(i) == fileIds[i] && lines->GetValue(i) == fileLines[i];
+  }
+  FEATUREPOINTS_CHECK(a.Errors.empty() && same,
+    "organized ASCII: FilePointIds 0 2 4 5 on lines 9 12 16 17: %s", a.Message.c_str());
+
+  // Without a skipped point there is nothing to number.
+  const std::string wholePath = PathOf("whole.pcd");
+  Spit(wholePath, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 2\nPOINTS 2\n"
+                  "DATA ascii\n0 0 0\n1 1 1\n");
+  ReadResult w = Read(wholePath);
+  FEATUREPOINTS_CHECK(w.Errors.empty() && w.Cloud->GetNumberOfPoints() == 2 &&
+      w.Cloud->GetFieldData()->GetNumberOfArrays() == 0,
+    "whole: no field data: %s", w.Message.c_str());
 }
 
 vtkSmartPointer<vtkPolyData> RandomCloud(vtkIdType n, bool doublePoints)

@@ -12,6 +12,7 @@
 
 #include "vtkBase64Utilities.h"
 #include "vtkFeatureModelSource.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkPointCloudIO.h"
@@ -35,6 +36,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <random>
@@ -1374,7 +1376,27 @@ void NewFormats()
       organized.Err.find("featurepoints: warning: ") != std::string::npos &&
       organized.Err.find("200 of 2000 points skipped") != std::string::npos,
     "organized PCD: 1800 points read, 200 skipped with a warning: " + organized.Out + organized.Err);
+  std::string error;
+  vtkSmartPointer<vtkPointSet> written = vtkPointCloudIO::Read(Path("o.vtp"), error);
+  Check(written && !written->GetFieldData()->GetArray("FilePointIds"),
+    "organized PCD: the output carries no FilePointIds (the reader's numbering): " + error);
   ::unlink(Path("o.vtp").c_str());
+  // A NaN intensity after skipped points is named by the file's numbering (point 1234, after
+  // 123 NaN points), not the cloud's (1111); in ASCII data also by its line.
+  std::string nanBody = body;
+  std::memcpy(&nanBody[1234 * 16 + 12], &nan, 4);
+  Spit(Path("organized-nan.pcd"),
+    fields + "WIDTH 50\nHEIGHT 40\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 2000\nDATA binary\n" + nanBody);
+  ExpectFailure("organized PCD with a NaN intensity", { Path("organized-nan.pcd"), Path("o.vtp"), "--quiet" }, 1,
+    "organized-nan.pcd: point 1234 (counting from 0, as the file numbers its points; 123 points "
+    "with a NaN or infinite coordinate before it skipped): point array 'intensity' holds nan, not "
+    "a finite number");
+  Spit(Path("nan-ascii.pcd"),
+    "VERSION 0.7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\nWIDTH 4\nPOINTS 4\n"
+    "DATA ascii\n0 0 0 1\nnan nan nan 1\n\n1 0 0 1\n0 1 0 nan\n");
+  ExpectFailure("ASCII PCD with a NaN intensity", { Path("nan-ascii.pcd"), Path("o.vtp"), "--quiet" }, 1,
+    "nan-ascii.pcd:12: point 3 (counting from 0, as the file numbers its points; 1 point with a "
+    "NaN or infinite coordinate before it skipped): point array 'intensity' holds nan");
 
   Spit(Path("cut.pcd"),
     fields + "WIDTH 2000\nHEIGHT 1\nPOINTS 2000\nDATA binary\n" + body.substr(0, body.size() / 2));
@@ -1433,7 +1455,7 @@ void NewFormats()
   Spit(Path("good.las"), lasBytes);
   const Run good = ExpectSuccess("LAS format 3", { Path("good.las"), Path("o.vtp") });
   Check(good.Out.find(": 2000 points") != std::string::npos, "LAS format 3: " + good.Out);
-  for (const char* name : { "organized.pcd", "cut.pcd", "huge.pcd", "lying.pcd", "type.pcd",
+  for (const char* name : { "organized.pcd", "organized-nan.pcd", "nan-ascii.pcd", "cut.pcd", "huge.pcd", "lying.pcd", "type.pcd",
          "bomb.pcd", "cut.las", "huge.las", "format.las", "cloud.laz", "good.las", "o.vtp" })
   {
     ::unlink(Path(name).c_str());
