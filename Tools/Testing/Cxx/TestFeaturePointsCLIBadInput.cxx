@@ -367,7 +367,9 @@ void FuzzedFiles()
     "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 1500 float\n" + body +
       "VERTICES 1000000000 2000000000\n1 0\n");
   ExpectFailure("legacy VTK declaring 10^9 cells", { Path("billion-cells.vtk"), Path("o.vtp") }, 1,
-    "billion-cells.vtk: cannot read: VTK's vtkPolyDataReader failed without saying why", 10.0);
+    "billion-cells.vtk: the VERTICES block (line 1506) declares 1000000000 cells; the file ends "
+    "after 1 of them",
+    10.0);
   // A zlib-compressed VTP whose first block header declares blocks of 0 bytes: VTK's reader
   // divides by it (a floating-point exception in its child process); refused with the array named.
   {
@@ -1026,6 +1028,44 @@ void LegacyFiles()
     Path("o.vtp") }, 1, "cut-binary.vtk: the field array line 'v 1 100 float' at byte " +
       std::to_string(arrayLine) + " needs 400 bytes of binary data after it, but the file ends "
       "40 bytes after it (a file cut short)");
+  // Cell blocks whose counts lie (VTK's reader crashed, said "Unrecognized keyword: 1", "Error
+  // reading ascii data" or nothing): the block, its line and what disagrees are named.
+  const std::string three = "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n";
+  Spit(Path("cells-size.vtk"), header + three + "VERTICES 3 7\n1 0\n1 1\n1 2\n");
+  ExpectFailure("legacy VTK whose cells hold fewer values than declared",
+    { Path("cells-size.vtk"), Path("o.vtp") }, 1,
+    "cells-size.vtk:7: the VERTICES line declares 3 cells in 7 values, but its cells hold 6 (a "
+    "corrupt size)");
+  Spit(Path("cells-more.vtk"), header + three + "VERTICES 2 4\n1 0\n1 1\n1 2\n");
+  ExpectFailure("legacy VTK with more cells than declared", { Path("cells-more.vtk"),
+    Path("o.vtp") }, 1,
+    "cells-more.vtk:10: a number ('1') after the last value of the VERTICES block (line 7): the "
+    "block holds more than its line declares");
+  const std::string v5 = "# vtk DataFile Version 5.1\nt\nASCII\nDATASET POLYDATA\n" + three;
+  Spit(Path("offsets-few.vtk"), v5 + "VERTICES 4 3\nOFFSETS vtktypeint64\n0 1 2\n"
+                                     "CONNECTIVITY vtktypeint64\n0 1 2\n");
+  ExpectFailure("legacy VTK 5.1 with fewer offsets than declared", { Path("offsets-few.vtk"),
+    Path("o.vtp") }, 1,
+    "offsets-few.vtk:10: 'CONNECTIVITY' where offset 3 (counting from 0) of the 4 that the "
+    "VERTICES block (line 7) declares should be: the block holds fewer offsets than declared");
+  Spit(Path("connectivity-few.vtk"), v5 + "VERTICES 4 3\nOFFSETS vtktypeint64\n0 1 2 3\n"
+                                          "CONNECTIVITY vtktypeint64\n0 1\n");
+  ExpectFailure("legacy VTK 5.1 with fewer point ids than declared",
+    { Path("connectivity-few.vtk"), Path("o.vtp") }, 1,
+    "connectivity-few.vtk: the VERTICES block (line 7) declares 3 connectivity values; the file "
+    "ends before the point id as connectivity value 2");
+  const std::string grid = "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n" +
+    three + "CELLS 3 6\n1 0\n1 1\n1 2\n";
+  Spit(Path("types-count.vtk"), grid + "CELL_TYPES 2\n1\n1\n1\n");
+  ExpectFailure("legacy VTK grid with fewer cell types than cells", { Path("types-count.vtk"),
+    Path("o.vtp") }, 1,
+    "types-count.vtk:11: the CELL_TYPES line declares 2 cell types for the 3 cells of the CELLS "
+    "block");
+  Spit(Path("types-cut.vtk"), grid + "CELL_TYPES 3\n1\n1\n");
+  ExpectFailure("legacy VTK grid cut in its cell types", { Path("types-cut.vtk"),
+    Path("o.vtp") }, 1,
+    "types-cut.vtk: the CELL_TYPES block (line 11) declares 3 cell types; the file ends after 2 "
+    "of them");
   // What VTK's reader reads is not refused: a '+' and leading zeros in the count; field data
   // before the points whose array is named POINTS (its line is no data set's POINTS line).
   Spit(Path("plus.vtk"), header + "POINTS +0003 float\n0 0 0 1 0 0 0 1 0\n");
