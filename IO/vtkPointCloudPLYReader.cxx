@@ -449,6 +449,7 @@ private:
   bool ReadHeader();
   bool CheckElementBytes(const Element& vertex);
   bool SkipElement(const Element& e, uint64_t reserve, const std::string& after);
+  bool SkipElementsAfter(const Element& vertex);
   bool ParseAsciiRow(const Element& e, uint64_t r, char* row);
   bool Prepare(const Element& vertex, vtkPolyData* output);
   bool CheckVertexBytes(const Element& vertex);
@@ -666,11 +667,12 @@ bool PLYParser::NextDataLine(std::string_view& line)
   return false;
 }
 
-// Reads past the rows of element e, an element before the vertices. ASCII: each row must hold
+// Reads past the rows of element e, an element other than the vertices. ASCII: each row must hold
 // the values its properties and list counts say (ParseAsciiRow). Binary: when the file holds e's
 // rows at their least and the `reserve` bytes that the elements after e take at least (`after`
 // names them), a list count that runs into those bytes is e's error, not theirs (they would
-// otherwise be read from e's data and blamed).
+// otherwise be read from e's data and blamed). For the last element (`after` empty) a list that
+// runs past the file is where the file ends.
 bool PLYParser::SkipElement(const Element& e, uint64_t reserve, const std::string& after)
 {
   if (e.Properties.empty())
@@ -717,7 +719,7 @@ bool PLYParser::SkipElement(const Element& e, uint64_t reserve, const std::strin
   const uint64_t size = this->In.FileSize();
   const uint64_t room = size - std::min(start, size);
   const uint64_t least = LeastBytes(e, false);
-  const bool blame = least <= room && reserve <= room - least;
+  const bool blame = !after.empty() && least <= room && reserve <= room - least;
   // The least bytes of the properties after each one in a row.
   std::vector<uint64_t> rest(e.Properties.size() + 1, 0);
   for (size_t i = e.Properties.size(); i-- > 0;)
@@ -804,6 +806,32 @@ bool PLYParser::CheckElementBytes(const Element& vertex)
         e.Line);
     }
     afterVertex = afterVertex || &e == &vertex;
+  }
+  return true;
+}
+
+// Reads past the elements after the vertices, as past those before them (SkipElement): a file
+// cut short in them (a mesh's faces), or whose rows do not hold what their list counts say, is an
+// error, as it is before the vertices; their values are not kept. Called once every vertex is
+// read (a piece of the vertices alone does not reach them).
+bool PLYParser::SkipElementsAfter(const Element& vertex)
+{
+  const size_t first = static_cast<size_t>(&vertex - this->Elements.data()) + 1;
+  std::vector<uint64_t> reserve(this->Elements.size() + 1, 0); // [i]: elements after i, at least
+  for (size_t i = this->Elements.size(); i-- > first;)
+  {
+    reserve[i] = SaturatedSum(reserve[i + 1], LeastBytes(this->Elements[i], false));
+  }
+  for (size_t i = first; i < this->Elements.size(); ++i)
+  {
+    const std::string after = i + 1 < this->Elements.size()
+      ? "the " + Printable(this->Elements[i + 1].Name) + " element" +
+        (i + 2 < this->Elements.size() ? " and those after it" : "")
+      : std::string();
+    if (!this->SkipElement(this->Elements[i], reserve[i + 1], after))
+    {
+      return false;
+    }
   }
   return true;
 }
@@ -1344,7 +1372,7 @@ bool PLYParser::Read(vtkPolyData* output, bool createVertexCells, int piece, int
   }
   const bool ok = this->FileFormat == Format::Ascii ? this->ReadAsciiVertices(*vertex)
                                                     : this->ReadBinaryVertices(*vertex);
-  if (!ok)
+  if (!ok || (this->NumberOfRows == vertex->Count && !this->SkipElementsAfter(*vertex)))
   {
     return false;
   }

@@ -19,7 +19,10 @@
  * - At most MaximumNumberOfArrays arrays besides the points (each array costs time per array
  *   in VTK's point data: 100,000 properties would take minutes); more is an error.
  * - List properties of the vertex element are skipped (with a warning). Other elements (faces,
- *   edges, ...) are skipped: a mesh's vertices are read as a point cloud.
+ *   edges, ...) are skipped: a mesh's vertices are read as a point cloud. Their rows are still
+ *   read past, before and after the vertices: a file cut short in them, or whose rows do not
+ *   hold what their list counts say, is an error (a piece other than the whole file does not
+ *   reach the elements after the vertices).
  *
  * With CreateVertexCells on (default) the output has one vertex cell per point, so that it
  * renders as points.

@@ -662,6 +662,49 @@ void TestErrors()
     "the elements up to it take at least 4611686018427387916 bytes, but 25 bytes follow "
     "end_header",
     7);
+  // ... and are read past as those before them: a mesh's faces cut short after whole vertices
+  // are the file's end, named with the face (they were taken as whole).
+  {
+    const std::string head = "element vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 4\n"
+                             "property list uchar int vertex_indices\n";
+    std::string bytes = "ply\nformat binary_little_endian 1.0\n" + head + "end_header\n" +
+      std::string(36, '\0');
+    const size_t faces = bytes.size();
+    for (int f = 0; f < 2; ++f)
+    {
+      bytes += '\x03';
+      bytes += std::string(12, '\0');
+    }
+    bytes += '\x03';
+    bytes += std::string(5, '\0'); // face 3 cut inside its list
+    ExpectError("binary faces cut after the vertices", "faces_cut.ply", bytes,
+      "the file ends in face 3 of 4 (binary data from byte " + std::to_string(faces) + ")");
+    ExpectError("ASCII faces cut after the vertices", "faces_cut_ascii.ply",
+      "ply\nformat ascii 1.0\n" + head + "end_header\n" + vertices + "3 0 1 2\n3 0 1 2\n",
+      "the file ends in face 3 of 4 (ASCII data, after line 14)");
+    ExpectError("ASCII face short of its list after the vertices", "faces_short_ascii.ply",
+      "ply\nformat ascii 1.0\n" + head + "end_header\n" + vertices +
+        "3 0 1 2\n3 0 1\n3 0 1 2\n3 0 1 2\n",
+      "list count 3 in property 'vertex_indices' of face 2 of 4, but the line has 2 values after "
+      "it",
+      14);
+    // A list count of the faces that runs into the element after them is the faces' error.
+    std::string two = "ply\nformat binary_little_endian 1.0\n" + head +
+      "element edge 2\nproperty int vertex1\nproperty int vertex2\nend_header\n" +
+      std::string(36, '\0');
+    const size_t list = two.size() + 14;
+    for (int f = 0; f < 4; ++f)
+    {
+      two += f == 1 ? '\x0a' : '\x03'; // face 2 counts 10 items: past faces 3 and 4
+      two += std::string(12, '\0');
+    }
+    two += std::string(16, '\0');
+    ExpectError("face list running into the edges", "faces_into_edges.ply", two,
+      "list 'vertex_indices' of face 2 of 4 counts 10 items of 4 bytes from byte " +
+        std::to_string(list) + ": they run into the data of the edge element, at least 16 of the "
+        "file's " + std::to_string(two.size()) + " bytes (a wrong list count)");
+  }
 
   // A valid binary file cut in the header, right after it, in a vertex, one byte short.
   vtkSmartPointer<vtkPolyData> cloud = MakeCloud(50, 3, false);
