@@ -900,6 +900,20 @@ public:
       this->At = 0;
     }
   }
+  // Skips a METADATA block (its keyword just read): its lines up to an empty one.
+  void SkipMetadata()
+  {
+    while (std::getline(this->File, this->Text))
+    {
+      ++this->Number;
+      if (this->Text.empty() || this->Text == "\r")
+      {
+        break;
+      }
+    }
+    this->Text.clear();
+    this->At = 0;
+  }
   // The line of the word last read.
   long Line() const { return this->Number; }
   double Version = 0.0; // the file format's version (cells as offsets from 5 on)
@@ -924,8 +938,8 @@ bool WholeNumber(const std::string& word, long long& value)
 // A word of a file quoted for a message (cut to 40 bytes).
 std::string QuotedWord(const std::string& word)
 {
-  return "'" + vtkPointCloudIO::MessageText((word.size() > 40 ? word.substr(0, 40) + "..." : word).c_str()) +
-    "'";
+  const std::string shown = word.size() > 40 ? word.substr(0, 40) + "..." : word;
+  return "'" + vtkPointCloudIO::MessageText(shown.c_str()) + "'";
 }
 
 // One block of ASCII cells, as a legacy file declares it on its line (VERTICES, LINES, POLYGONS,
@@ -945,11 +959,13 @@ std::string LegacyCellBlockProblem(LegacyWords& in, const std::string& fileName,
   {
     return {};
   }
-  if (!WholeNumber(first, n) || !WholeNumber(second, size))
+  const bool firstWhole = WholeNumber(first, n);
+  if (!firstWhole || !WholeNumber(second, size))
   {
     return fileName + ":" + std::to_string(line) + ": the " + keyword + " line declares " +
-      QuotedWord(first) + " " + (offsets ? "offsets" : "cells") + " and " + QuotedWord(second) +
-      " " + (offsets ? "connectivity values" : "values") + ", not whole numbers of 0 or more";
+      (firstWhole ? QuotedWord(second) + (offsets ? " connectivity values" : " values")
+                  : QuotedWord(first) + (offsets ? " offsets" : " cells")) +
+      ", not a whole number of 0 or more";
   }
   const std::string at = fileName + ":";
   // The next word as a point id; `which` names it ("in cell 3", "as connectivity value 7").
@@ -970,22 +986,31 @@ std::string LegacyCellBlockProblem(LegacyWords& in, const std::string& fileName,
     }
     return {};
   };
+  // The next word as item v of the block's n (a cell's number of points, an offset).
+  auto nextCount = [&](const std::string& item, long long v, long long& value) -> std::string {
+    if (!in.Next(word))
+    {
+      return fileName + ": " + where + " declares " + std::to_string(n) + " " + item +
+        "s; the file ends after " + std::to_string(v) + " of them";
+    }
+    if (!WholeNumber(word, value))
+    {
+      return at + std::to_string(in.Line()) + ": " + QuotedWord(word) + " where " + item + " " +
+        std::to_string(v) + " (counting from 0) of the " + std::to_string(n) + " that " + where +
+        " declares should be: the block holds fewer " + item + "s than declared";
+    }
+    return {};
+  };
   if (!offsets)
   {
     long long used = 0;
     for (long long c = 0; c < n; ++c)
     {
       long long k = 0;
-      if (!in.Next(word))
+      const std::string problem = nextCount("cell", c, k);
+      if (!problem.empty())
       {
-        return fileName + ": " + where + " declares " + std::to_string(n) +
-          " cells; the file ends after " + std::to_string(c) + " of them";
-      }
-      if (!WholeNumber(word, k))
-      {
-        return at + std::to_string(in.Line()) + ": " + QuotedWord(word) + " where cell " +
-          std::to_string(c) + " (counting from 0) of the " + std::to_string(n) + " that " +
-          where + " declares should start: the block holds fewer cells than declared";
+        return problem;
       }
       used += 1 + std::min(k, size);
       if (used > size)
@@ -1016,11 +1041,26 @@ std::string LegacyCellBlockProblem(LegacyWords& in, const std::string& fileName,
   for (const std::string part : { "OFFSETS", "CONNECTIVITY" })
   {
     std::string type;
-    if (!in.Next(word) || (word == part && !in.Next(type)))
+    bool read = in.Next(word);
+    while (read && word == "METADATA")
+    {
+      in.SkipMetadata(); // the offsets' information keys
+      read = in.Next(word);
+    }
+    const long partLine = in.Line();
+    if (!read || (word == part && !in.Next(type)))
     {
       return fileName + ": " + where + ": the file ends before its " + part + " line";
     }
+    static const std::set<std::string> types = { "unsigned_char", "char", "unsigned_short",
+      "short", "unsigned_int", "int", "unsigned_long", "long", "vtkIdType", "vtktypeint64",
+      "vtktypeuint64" };
     long long number = 0;
+    if (word == part && !types.count(type))
+    {
+      return at + std::to_string(partLine) + ": the " + part + " line of " + where +
+        " names no integer type (" + QuotedWord(type) + " follows it)";
+    }
     if (word != part)
     {
       return at + std::to_string(in.Line()) + ": " + QuotedWord(word) + " where the " + part +
@@ -1046,16 +1086,10 @@ std::string LegacyCellBlockProblem(LegacyWords& in, const std::string& fileName,
     for (long long v = 0; v < n; ++v)
     {
       long long offset = 0;
-      if (!in.Next(word))
+      const std::string problem = nextCount("offset", v, offset);
+      if (!problem.empty())
       {
-        return fileName + ": " + where + " declares " + std::to_string(n) +
-          " offsets; the file ends after " + std::to_string(v) + " of them";
-      }
-      if (!WholeNumber(word, offset))
-      {
-        return at + std::to_string(in.Line()) + ": " + QuotedWord(word) + " where offset " +
-          std::to_string(v) + " (counting from 0) of the " + std::to_string(n) + " that " +
-          where + " declares should be: the block holds fewer offsets than declared";
+        return problem;
       }
       const std::string which = at + std::to_string(in.Line()) + ": offset " +
         std::to_string(v) + " (counting from 0) of " + where + " is " + std::to_string(offset);
@@ -1114,6 +1148,11 @@ std::string LegacyCellsProblem(const std::string& fileName)
     const long line = in.Line();
     const std::string keyword = upper(word);
     after.clear();
+    if (keyword == "METADATA")
+    {
+      in.SkipMetadata(); // the information keys of the array before it
+      continue;
+    }
     if (keyword == "DATASET")
     {
       in.Next(word);

@@ -540,7 +540,8 @@ bool PCDParser::CheckHeader()
     if (f->Count != 1)
     {
       return this->Fail(
-        std::string("field ") + axis + " has COUNT " + std::to_string(f->Count) + ", 1 expected");
+        std::string("field ") + axis + " has COUNT " + std::to_string(f->Count) + ", 1 expected",
+        lineOf("COUNT"));
     }
   }
   // POINTS is WIDTH x HEIGHT; either says the number of points when the other is missing.
@@ -548,7 +549,8 @@ bool PCDParser::CheckHeader()
     this->Width > std::numeric_limits<uint64_t>::max() / this->Height)
   {
     return this->Fail("WIDTH " + std::to_string(this->Width) + " x HEIGHT " +
-      std::to_string(this->Height) + " overflows");
+        std::to_string(this->Height) + " overflows",
+      lineOf("HEIGHT"));
   }
   if (this->HasPoints && this->HasWidth && this->Points != this->Width * this->Height)
   {

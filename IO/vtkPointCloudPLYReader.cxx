@@ -450,6 +450,7 @@ private:
   bool CheckElementBytes(const Element& vertex);
   bool SkipElement(const Element& e, uint64_t reserve, const std::string& after);
   bool SkipElementsAfter(const Element& vertex);
+  bool CheckAfterLastElement(const Element& last);
   bool ParseAsciiRow(const Element& e, uint64_t r, char* row);
   bool Prepare(const Element& vertex, vtkPolyData* output);
   bool CheckVertexBytes(const Element& vertex);
@@ -833,7 +834,34 @@ bool PLYParser::SkipElementsAfter(const Element& vertex)
       return false;
     }
   }
-  return true;
+  return first == this->Elements.size() || this->CheckAfterLastElement(this->Elements.back());
+}
+
+// After the rows of the last element (not the vertices: see CheckVertexBytes and Read), data
+// that would make at least one more row is refused as it is after vertices that come last: a
+// count smaller than the rows stored would drop them unsaid (a byte or two after binary data, as
+// some writers leave, are no row).
+bool PLYParser::CheckAfterLastElement(const Element& last)
+{
+  const std::string rows = std::to_string(last.Count) + " " + Printable(last.Name) + " rows";
+  if (this->FileFormat == Format::Ascii)
+  {
+    std::string_view line;
+    return !this->NextDataLine(line) ||
+      this->Fail("data after the " + rows + " that the header declares (the " +
+          Printable(last.Name) + " element is the last)",
+        this->Line);
+  }
+  const uint64_t end = this->In.Position();
+  const uint64_t remaining = this->In.FileSize() - std::min(end, this->In.FileSize());
+  if (remaining < std::max<uint64_t>(3, LeastRowBytes(last, false)))
+  {
+    return true;
+  }
+  return this->Fail("the header declares " + rows + ", but " + std::to_string(remaining) +
+    " bytes follow the last of them (from byte " + std::to_string(end) + " of " +
+    std::to_string(this->In.FileSize()) + ", the " + Printable(last.Name) +
+    " element the last): a wrong count, or data the header does not declare");
 }
 
 // Creates the output points and arrays of the vertex element and says where each property goes.

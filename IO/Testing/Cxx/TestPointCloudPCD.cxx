@@ -588,7 +588,12 @@ void Malformed()
       "VERSION 0.7\nFIELDS x y z x\nSIZE 4 4 4 4\nTYPE F F F F\nWIDTH 1\nPOINTS 1\nDATA ascii\n1 "
       "2 3 4\n",
       "second field named 'x'" },
-    { "overflow.pcd", xyz + "WIDTH 4294967296\nHEIGHT 4294967296\nDATA binary\n", "overflows" },
+    { "overflow.pcd", xyz + "WIDTH 4294967296\nHEIGHT 4294967296\nDATA binary\n",
+      ":7: WIDTH 4294967296 x HEIGHT 4294967296 overflows" },
+    { "count-x.pcd",
+      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 2 1 1\nWIDTH 1\nDATA ascii\n"
+      "1 1 2 3\n",
+      ":5: field x has COUNT 2, 1 expected" },
     { "count-zero.pcd",
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 0 1\nWIDTH 1\nDATA ascii\n1 3\n",
       "COUNT '0' is not an integer from 1" },

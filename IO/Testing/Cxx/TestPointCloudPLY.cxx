@@ -689,6 +689,26 @@ void TestErrors()
       "list count 3 in property 'vertex_indices' of face 2 of 4, but the line has 2 values after "
       "it",
       14);
+    // Rows after the last face, as after vertices that come last: a wrong count (a trailing byte
+    // or two, as some writers leave, is no row).
+    std::string whole = bytes.substr(0, faces);
+    for (int f = 0; f < 4; ++f)
+    {
+      whole += '\x03';
+      whole += std::string(12, '\0');
+    }
+    ExpectError("binary rows after the last face", "faces_more.ply", whole + std::string(13, '\0'),
+      "the header declares 4 face rows, but 13 bytes follow the last of them (from byte " +
+        std::to_string(whole.size()) + " of " + std::to_string(whole.size() + 13) +
+        ", the face element the last): a wrong count, or data the header does not declare");
+    fptest::Spit(PathOf("faces_newline.ply"), whole + "\n");
+    const ReadResult newline = Read(PathOf("faces_newline.ply"));
+    FEATUREPOINTS_CHECK(newline.Errors == 0 && newline.Data->GetNumberOfPoints() == 3,
+      "a newline after the last face: read (%s)", newline.Message.c_str());
+    ExpectError("ASCII rows after the last face", "faces_more_ascii.ply",
+      "ply\nformat ascii 1.0\n" + head + "end_header\n" + vertices +
+        "3 0 1 2\n3 0 1 2\n3 0 1 2\n3 0 1 2\n\n3 0 1 2\n",
+      "data after the 4 face rows that the header declares (the face element is the last)", 18);
     // A list count of the faces that runs into the element after them is the faces' error.
     std::string two = "ply\nformat binary_little_endian 1.0\n" + head +
       "element edge 2\nproperty int vertex1\nproperty int vertex2\nend_header\n" +

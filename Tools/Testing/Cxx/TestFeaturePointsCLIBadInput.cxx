@@ -1031,23 +1031,44 @@ void LegacyFiles()
   // Cell blocks whose counts lie (VTK's reader crashed, said "Unrecognized keyword: 1", "Error
   // reading ascii data" or nothing): the block, its line and what disagrees are named.
   const std::string three = "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n";
+  const std::string v5Header = "# vtk DataFile Version 5.1\nt\nASCII\nDATASET POLYDATA\n";
   Spit(Path("cells-size.vtk"), header + three + "VERTICES 3 7\n1 0\n1 1\n1 2\n");
   ExpectFailure("legacy VTK whose cells hold fewer values than declared",
     { Path("cells-size.vtk"), Path("o.vtp") }, 1,
     "cells-size.vtk:7: the VERTICES line declares 3 cells in 7 values, but its cells hold 6 (a "
     "corrupt size)");
+  // VTK's writer follows an array with its information keys (METADATA up to an empty line).
+  Spit(Path("cells-metadata.vtk"), header + three +
+      "METADATA\nINFORMATION 1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 2 0 1.41421\n\n"
+      "VERTICES 4 8\n1 0\n1 1\n1 2\n");
+  ExpectFailure("legacy VTK with fewer cells than declared, after metadata",
+    { Path("cells-metadata.vtk"), Path("o.vtp") }, 1,
+    "cells-metadata.vtk: the VERTICES block (line 12) declares 4 cells; the file ends after 3 of "
+    "them");
+  Spit(Path("cells-negative.vtk"), v5Header + three + "VERTICES -4 3\nOFFSETS vtktypeint64\n0 1 2 3\n"
+                                                      "CONNECTIVITY vtktypeint64\n0 1 2\n");
+  ExpectFailure("legacy VTK 5.1 with a negative offset count", { Path("cells-negative.vtk"),
+    Path("o.vtp") }, 1,
+    "cells-negative.vtk:7: the VERTICES line declares '-4' offsets, not a whole number of 0 or "
+    "more");
   Spit(Path("cells-more.vtk"), header + three + "VERTICES 2 4\n1 0\n1 1\n1 2\n");
   ExpectFailure("legacy VTK with more cells than declared", { Path("cells-more.vtk"),
     Path("o.vtp") }, 1,
     "cells-more.vtk:10: a number ('1') after the last value of the VERTICES block (line 7): the "
     "block holds more than its line declares");
-  const std::string v5 = "# vtk DataFile Version 5.1\nt\nASCII\nDATASET POLYDATA\n" + three;
+  const std::string v5 = v5Header + three;
   Spit(Path("offsets-few.vtk"), v5 + "VERTICES 4 3\nOFFSETS vtktypeint64\n0 1 2\n"
                                      "CONNECTIVITY vtktypeint64\n0 1 2\n");
   ExpectFailure("legacy VTK 5.1 with fewer offsets than declared", { Path("offsets-few.vtk"),
     Path("o.vtp") }, 1,
     "offsets-few.vtk:10: 'CONNECTIVITY' where offset 3 (counting from 0) of the 4 that the "
     "VERTICES block (line 7) declares should be: the block holds fewer offsets than declared");
+  Spit(Path("offsets-type.vtk"), v5 + "VERTICES 4 3\nOFFSETS\n0 1 2 3\n"
+                                      "CONNECTIVITY vtktypeint64\n0 1 2\n");
+  ExpectFailure("legacy VTK 5.1 with no OFFSETS type", { Path("offsets-type.vtk"),
+    Path("o.vtp") }, 1,
+    "offsets-type.vtk:8: the OFFSETS line of the VERTICES block (line 7) names no integer type "
+    "('0' follows it)");
   Spit(Path("connectivity-few.vtk"), v5 + "VERTICES 4 3\nOFFSETS vtktypeint64\n0 1 2 3\n"
                                           "CONNECTIVITY vtktypeint64\n0 1\n");
   ExpectFailure("legacy VTK 5.1 with fewer point ids than declared",
@@ -1427,14 +1448,16 @@ void NewFormats()
   std::memcpy(&nanBody[1234 * 16 + 12], &nan, 4);
   Spit(Path("organized-nan.pcd"),
     fields + "WIDTH 50\nHEIGHT 40\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 2000\nDATA binary\n" + nanBody);
-  ExpectFailure("organized PCD with a NaN intensity", { Path("organized-nan.pcd"), Path("o.vtp"), "--quiet" }, 1,
+  ExpectFailure("organized PCD with a NaN intensity",
+    { Path("organized-nan.pcd"), Path("o.vtp"), "--quiet" }, 1,
     "organized-nan.pcd: point 1234 (counting from 0, as the file numbers its points; 123 points "
     "with a NaN or infinite coordinate before it skipped): point array 'intensity' holds nan, not "
     "a finite number");
   Spit(Path("nan-ascii.pcd"),
     "VERSION 0.7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\nWIDTH 4\nPOINTS 4\n"
     "DATA ascii\n0 0 0 1\nnan nan nan 1\n\n1 0 0 1\n0 1 0 nan\n");
-  ExpectFailure("ASCII PCD with a NaN intensity", { Path("nan-ascii.pcd"), Path("o.vtp"), "--quiet" }, 1,
+  ExpectFailure("ASCII PCD with a NaN intensity",
+    { Path("nan-ascii.pcd"), Path("o.vtp"), "--quiet" }, 1,
     "nan-ascii.pcd:12: point 3 (counting from 0, as the file numbers its points; 1 point with a "
     "NaN or infinite coordinate before it skipped): point array 'intensity' holds nan");
 
@@ -1495,8 +1518,9 @@ void NewFormats()
   Spit(Path("good.las"), lasBytes);
   const Run good = ExpectSuccess("LAS format 3", { Path("good.las"), Path("o.vtp") });
   Check(good.Out.find(": 2000 points") != std::string::npos, "LAS format 3: " + good.Out);
-  for (const char* name : { "organized.pcd", "organized-nan.pcd", "nan-ascii.pcd", "cut.pcd", "huge.pcd", "lying.pcd", "type.pcd",
-         "bomb.pcd", "cut.las", "huge.las", "format.las", "cloud.laz", "good.las", "o.vtp" })
+  for (const char* name : { "organized.pcd", "organized-nan.pcd", "nan-ascii.pcd", "cut.pcd",
+         "huge.pcd", "lying.pcd", "type.pcd", "bomb.pcd", "cut.las", "huge.las", "format.las",
+         "cloud.laz", "good.las", "o.vtp" })
   {
     ::unlink(Path(name).c_str());
   }
