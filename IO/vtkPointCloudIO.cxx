@@ -41,6 +41,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -1012,19 +1013,19 @@ std::string LegacyCellBlockProblem(LegacyWords& in, const std::string& fileName,
       {
         return problem;
       }
-      used += 1 + std::min(k, size);
-      if (used > size)
+      if (k >= size - used) // 1 + k more values pass the size (used never does)
       {
         return at + std::to_string(in.Line()) + ": cell " + std::to_string(c) +
           " (counting from 0) of " + where + " runs past the " + std::to_string(size) +
           " values that its line declares (a corrupt size or point count)";
       }
+      used += 1 + k;
       for (long long p = 0; p < k; ++p)
       {
-        const std::string problem = pointId("in cell " + std::to_string(c));
-        if (!problem.empty())
+        const std::string idProblem = pointId("in cell " + std::to_string(c));
+        if (!idProblem.empty())
         {
-          return problem;
+          return idProblem;
         }
       }
     }
@@ -1160,7 +1161,8 @@ std::string LegacyCellsProblem(const std::string& fileName)
     }
     if (keyword == "POINTS")
     {
-      if (!in.Next(word) || !WholeNumber(word, points) || !in.Next(value))
+      if (!in.Next(word) || !WholeNumber(word, points) || !in.Next(value) ||
+        points > std::numeric_limits<long long>::max() / 3)
       {
         return {};
       }
@@ -1353,6 +1355,12 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     const std::string keyword = upper(words[0]);
     long long n = 0, m = 0;
     const std::string quoted = quotedLine();
+    // A problem of this line as a cells line (past binary data, its byte instead of its number).
+    auto cellsLine = [&](const std::string& what) {
+      return fileName + (binaryBefore ? std::string() : ":" + std::to_string(number)) +
+        ": the cells line " + quoted +
+        (binaryBefore ? " at byte " + std::to_string(lineStart) : std::string()) + " " + what;
+    };
     if (keyword == "DATASET")
     {
       continue;
@@ -1366,8 +1374,21 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     }
     else if ((keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" ||
                keyword == "TRIANGLE_STRIPS" || keyword == "CELLS") &&
-      words.size() >= 3 && count(words[1], n) && count(words[2], m))
+      words.size() >= 3 && !(count(words[1], n) && count(words[2], m)))
     {
+      // VTK's reader reads such a count as a huge one (and crashes) or fails without a word.
+      return cellsLine("declares counts that are not whole numbers of 0 or more");
+    }
+    else if ((keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" ||
+               keyword == "TRIANGLE_STRIPS" || keyword == "CELLS") &&
+      words.size() >= 3)
+    {
+      if (!ids64 && m < n)
+      {
+        // Each cell holds at least its own number of points.
+        return cellsLine("declares " + std::to_string(n) + " cells in " + std::to_string(m) +
+          " values: each cell holds at least its number of points");
+      }
       if (!ids64)
       {
         if (!block(mul(4, m), "the cells line " + quoted))

@@ -1087,6 +1087,21 @@ void LegacyFiles()
     Path("o.vtp") }, 1,
     "types-cut.vtk: the CELL_TYPES block (line 11) declares 3 cell types; the file ends after 2 "
     "of them");
+  // Binary, a cells line whose size is no whole number: VTK's reader crashed.
+  const std::string cellsBinary =
+    "# vtk DataFile Version 4.2\nt\nBINARY\nDATASET POLYDATA\nPOINTS 3 float\n" +
+    std::string(36, '\0') + "\n";
+  const size_t cellsLine = cellsBinary.size();
+  Spit(Path("cells-binary.vtk"), cellsBinary + "VERTICES 3 -1\n" + std::string(24, '\0'));
+  ExpectFailure("binary legacy VTK with a negative cells size", { Path("cells-binary.vtk"),
+    Path("o.vtp") }, 1,
+    "cells-binary.vtk: the cells line 'VERTICES 3 -1' at byte " + std::to_string(cellsLine) +
+      " declares counts that are not whole numbers of 0 or more");
+  Spit(Path("cells-binary-size.vtk"), cellsBinary + "VERTICES 3 0\n" + std::string(24, '\0'));
+  ExpectFailure("binary legacy VTK with cells of no values", { Path("cells-binary-size.vtk"),
+    Path("o.vtp") }, 1,
+    "cells-binary-size.vtk: the cells line 'VERTICES 3 0' at byte " + std::to_string(cellsLine) +
+      " declares 3 cells in 0 values: each cell holds at least its number of points");
   // What VTK's reader reads is not refused: a '+' and leading zeros in the count; field data
   // before the points whose array is named POINTS (its line is no data set's POINTS line).
   Spit(Path("plus.vtk"), header + "POINTS +0003 float\n0 0 0 1 0 0 0 1 0\n");
