@@ -1008,16 +1008,16 @@ std::string LegacyCellBlockProblem(LegacyWords& in, const std::string& fileName,
     for (long long c = 0; c < n; ++c)
     {
       long long k = 0;
-      const std::string problem = nextCount("cell", c, k);
+      std::string problem = nextCount("cell", c, k);
+      if (problem.empty() && k >= size - used) // 1 + k more values pass the size
+      {
+        problem = at + std::to_string(in.Line()) + ": cell " + std::to_string(c) +
+          " (counting from 0) of " + where + " runs past the " + std::to_string(size) +
+          " values that its line declares (a corrupt size or point count)";
+      }
       if (!problem.empty())
       {
         return problem;
-      }
-      if (k >= size - used) // 1 + k more values pass the size (used never does)
-      {
-        return at + std::to_string(in.Line()) + ": cell " + std::to_string(c) +
-          " (counting from 0) of " + where + " runs past the " + std::to_string(size) +
-          " values that its line declares (a corrupt size or point count)";
       }
       used += 1 + k;
       for (long long p = 0; p < k; ++p)
