@@ -524,6 +524,24 @@ bool ParseOffset(const std::string& text, uint64_t& offset)
   return first < last && parsed.ec == std::errc() && parsed.ptr == text.data() + last;
 }
 
+// `text` in capitals: VTK's legacy reader takes its keywords and types in any case.
+std::string UpperCase(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return text;
+}
+
+// `word` as a whole number of 0 or more, as VTK's reader takes a count or an id (a leading '+'
+// passes).
+bool WholeNumber(const std::string& word, long long& value)
+{
+  const char* first = word.data() + (word.size() > 1 && word[0] == '+' ? 1 : 0);
+  const char* end = word.data() + word.size();
+  const auto parsed = std::from_chars(first, end, value);
+  return parsed.ec == std::errc() && parsed.ptr == end && value >= 0;
+}
+
 // A legacy VTK file's POINTS line against the file's size: a count that is not a whole number of
 // 0 or more (VTK's reader then reads the count as a keyword, "Unrecognized keyword: 0"), or more
 // points than the file's bytes can hold (VTK's reader allocates them all before it finds the file
@@ -539,11 +557,6 @@ bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string
   std::istringstream in(head);
   std::string line;
   bool binary = false, dataset = false;
-  auto upper = [](std::string word) {
-    std::transform(word.begin(), word.end(), word.begin(),
-      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return word;
-  };
   static const std::set<std::string> types = { "BIT", "CHAR", "UNSIGNED_CHAR", "SHORT",
     "UNSIGNED_SHORT", "INT", "UNSIGNED_INT", "LONG", "UNSIGNED_LONG", "VTKTYPEINT64",
     "VTKTYPEUINT64", "FLOAT", "DOUBLE" };
@@ -555,7 +568,7 @@ bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string
     {
       word.push_back(w);
     }
-    const std::string keyword = word.empty() ? std::string() : upper(word[0]);
+    const std::string keyword = word.empty() ? std::string() : UpperCase(word[0]);
     if (number == 3)
     {
       binary = keyword == "BINARY";
@@ -573,7 +586,7 @@ bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string
     {
       return true; // data follows whose bytes this check does not read
     }
-    if (keyword != "POINTS" || word.size() != 3 || !types.count(upper(word[2])))
+    if (keyword != "POINTS" || word.size() != 3 || !types.count(UpperCase(word[2])))
     {
       continue;
     }
@@ -723,8 +736,7 @@ std::string LegacyPointsProblem(const std::string& fileName)
     std::istringstream words(line);
     std::string keyword, declared;
     words >> keyword >> declared;
-    std::transform(keyword.begin(), keyword.end(), keyword.begin(),
-      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    keyword = UpperCase(keyword);
     if (number == 3 && keyword != "ASCII")
     {
       return {};
@@ -868,10 +880,8 @@ public:
     }
     std::istringstream words(this->Text);
     words >> format;
-    std::transform(format.begin(), format.end(), format.begin(),
-      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
     this->Text.clear();
-    return format == "ASCII";
+    return UpperCase(format) == "ASCII";
   }
   // The next word; false at the end of the file.
   bool Next(std::string& word)
@@ -925,16 +935,6 @@ private:
   size_t At = 0;
   long Number = 0;
 };
-
-// `word` as a whole number of 0 or more, as VTK's reader takes a count or an id (a leading '+'
-// passes).
-bool WholeNumber(const std::string& word, long long& value)
-{
-  const char* first = word.data() + (word.size() > 1 && word[0] == '+' ? 1 : 0);
-  const char* end = word.data() + word.size();
-  const auto parsed = std::from_chars(first, end, value);
-  return parsed.ec == std::errc() && parsed.ptr == end && value >= 0;
-}
 
 // A word of a file quoted for a message (cut to 40 bytes).
 std::string QuotedWord(const std::string& word)
@@ -1127,11 +1127,6 @@ std::string LegacyCellsProblem(const std::string& fileName)
   {
     return {};
   }
-  auto upper = [](std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return text;
-  };
   const bool offsets = in.Version >= 5.0;
   static const std::set<std::string> cellKeywords = { "VERTICES", "LINES", "POLYGONS",
     "TRIANGLE_STRIPS", "CELLS" };
@@ -1147,7 +1142,7 @@ std::string LegacyCellsProblem(const std::string& fileName)
         ") after the last value of " + after + ": the block holds more than its line declares";
     }
     const long line = in.Line();
-    const std::string keyword = upper(word);
+    const std::string keyword = UpperCase(word);
     after.clear();
     if (keyword == "METADATA")
     {
@@ -1268,11 +1263,6 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     }
     ++number;
   };
-  auto upper = [](std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return text;
-  };
   // The line just read, quoted for a message.
   auto quotedLine = [&line]() {
     return "'" + vtkPointCloudIO::MessageText(line.substr(0, 60).c_str()) + "'";
@@ -1297,7 +1287,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       format.erase(std::remove_if(format.begin(), format.end(),
                      [](unsigned char c) { return std::isspace(c) != 0; }),
         format.end());
-      if (upper(format) != "BINARY")
+      if (UpperCase(format) != "BINARY")
       {
         return {};
       }
@@ -1320,10 +1310,6 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     }
     const auto found = sizes.find(type);
     return found == sizes.end() ? -1 : mul(found->second, values);
-  };
-  auto count = [](const std::string& text, long long& value) {
-    const auto parsed = std::from_chars(text.data(), text.data() + text.size(), value);
-    return parsed.ec == std::errc() && parsed.ptr == text.data() + text.size() && value >= 0;
   };
   // Skips a block of `bytes` after the line just read; the problem when the file ends inside it.
   std::string problem;
@@ -1352,7 +1338,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
   const bool ids64 = version >= 5.0;
   while (next(words))
   {
-    const std::string keyword = upper(words[0]);
+    const std::string keyword = UpperCase(words[0]);
     long long n = 0, m = 0;
     const std::string quoted = quotedLine();
     // A problem of this line as a cells line (past binary data, its byte instead of its number).
@@ -1365,7 +1351,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     {
       continue;
     }
-    if (keyword == "POINTS" && words.size() >= 3 && count(words[1], n))
+    if (keyword == "POINTS" && words.size() >= 3 && WholeNumber(words[1], n))
     {
       if (!block(bytesOf(words[2], mul(3, n)), "the POINTS line " + quoted))
       {
@@ -1374,7 +1360,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     }
     else if ((keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" ||
                keyword == "TRIANGLE_STRIPS" || keyword == "CELLS") &&
-      words.size() >= 3 && !(count(words[1], n) && count(words[2], m)))
+      words.size() >= 3 && !(WholeNumber(words[1], n) && WholeNumber(words[2], m)))
     {
       // VTK's reader reads such a count as a huge one (and crashes) or fails without a word.
       return cellsLine("declares counts that are not whole numbers of 0 or more");
@@ -1411,7 +1397,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
         }
       }
     }
-    else if (keyword == "CELL_TYPES" && words.size() >= 2 && count(words[1], n))
+    else if (keyword == "CELL_TYPES" && words.size() >= 2 && WholeNumber(words[1], n))
     {
       if (!block(mul(4, n), "the CELL_TYPES line " + quoted))
       {
@@ -1419,14 +1405,14 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       }
     }
     else if ((keyword == "POINT_DATA" || keyword == "CELL_DATA") && words.size() >= 2 &&
-      count(words[1], n))
+      WholeNumber(words[1], n))
     {
       items = n;
     }
     else if (keyword == "SCALARS" && words.size() >= 3)
     {
       long long components = 1;
-      if (words.size() >= 4 && !count(words[3], components))
+      if (words.size() >= 4 && !WholeNumber(words[3], components))
       {
         return {};
       }
@@ -1440,7 +1426,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       }
       number = scalarsLine; // the message names the SCALARS line
       lineStart = scalarsStart;
-      if (upper(words[0]) != "LOOKUP_TABLE")
+      if (UpperCase(words[0]) != "LOOKUP_TABLE")
       {
         return {};
       }
@@ -1458,28 +1444,28 @@ std::string LegacyBinaryProblem(const std::string& fileName)
         return problem;
       }
     }
-    else if (keyword == "TEXTURE_COORDINATES" && words.size() >= 4 && count(words[2], n))
+    else if (keyword == "TEXTURE_COORDINATES" && words.size() >= 4 && WholeNumber(words[2], n))
     {
       if (!block(bytesOf(words[3], mul(items, n)), "the TEXTURE_COORDINATES line " + quoted))
       {
         return problem;
       }
     }
-    else if (keyword == "COLOR_SCALARS" && words.size() >= 3 && count(words[2], n))
+    else if (keyword == "COLOR_SCALARS" && words.size() >= 3 && WholeNumber(words[2], n))
     {
       if (!block(mul(items, n), "the COLOR_SCALARS line " + quoted))
       {
         return problem;
       }
     }
-    else if (keyword == "LOOKUP_TABLE" && words.size() >= 3 && count(words[2], n))
+    else if (keyword == "LOOKUP_TABLE" && words.size() >= 3 && WholeNumber(words[2], n))
     {
       if (!block(mul(4, n), "the LOOKUP_TABLE line " + quoted))
       {
         return problem;
       }
     }
-    else if (keyword == "FIELD" && words.size() >= 3 && count(words[2], n))
+    else if (keyword == "FIELD" && words.size() >= 3 && WholeNumber(words[2], n))
     {
       for (long long a = 0; a < n; ++a)
       {
@@ -1494,7 +1480,8 @@ std::string LegacyBinaryProblem(const std::string& fileName)
           continue;
         }
         long long components = 0, tuples = 0;
-        if (words.size() < 4 || !count(words[1], components) || !count(words[2], tuples))
+        if (words.size() < 4 || !WholeNumber(words[1], components) ||
+          !WholeNumber(words[2], tuples))
         {
           return {};
         }

@@ -1092,6 +1092,12 @@ void LegacyFiles()
     cellsBinary + "VERTICES 3 0\n" + std::string(24, '\0'),
     "cells-binary-size.vtk: the cells line 'VERTICES 3 0" + atByte +
       " declares 3 cells in 0 values: each cell holds at least its number of points");
+  // A '+' before a count is a count, as VTK's reader reads it: the cut block is what is wrong.
+  refused("binary legacy VTK with a '+' count, cut short", "cells-binary-plus.vtk",
+    cellsBinary + "VERTICES +3 6\n" + std::string(8, '\0'),
+    "cells-binary-plus.vtk: the cells line 'VERTICES +3 6" + atByte +
+      " needs 24 bytes of binary data after it, but the file ends 8 bytes after it (a file cut "
+      "short)");
   // What VTK's reader reads is not refused: a '+' and leading zeros in the count; field data
   // before the points whose array is named POINTS (its line is no data set's POINTS line).
   Spit(Path("plus.vtk"), header + "POINTS +0003 float\n0 0 0 1 0 0 0 1 0\n");
