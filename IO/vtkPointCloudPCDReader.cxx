@@ -852,6 +852,17 @@ bool PCDParser::ReadCompressedSizes()
       std::to_string(MaxLZFExpansion * uint64_t(compressed) + 8) + ", not " +
       std::to_string(uncompressed));
   }
+  // As in binary data, a point's worth of bytes or more after the block would be dropped unsaid
+  // (a byte or a few after it are no point).
+  const uint64_t after = this->In.Remaining() - compressed;
+  if (after >= this->RowSize)
+  {
+    return this->Fail("the compressed data (" + std::to_string(compressed) + " bytes from byte " +
+      std::to_string(start + 8) + ") ends at byte " + std::to_string(start + 8 + compressed) +
+      ", but " + std::to_string(after) + " more bytes follow it (the file has " +
+      std::to_string(this->In.FileSize()) +
+      " bytes): a wrong compressed size, or data the header does not declare");
+  }
   this->CompressedBytes = compressed;
   return true;
 }

@@ -295,6 +295,25 @@ void KnownCompressed()
         b.Message.find('\n') == std::string::npos,
       "%s: [%s], expected [%s]", c.Name, b.Message.c_str(), c.Expected);
   }
+  // Bytes after the block: a point's worth (12) is data the header does not declare (was
+  // ignored), as in binary data; a newline is none.
+  const std::string block = header + Bytes(uint32_t(lzf.size())) + Bytes(uint32_t(24)) + lzf;
+  const std::string trailing = PathOf("trailing-compressed.pcd");
+  Spit(trailing, block + std::string(12, 'x'));
+  ReadResult t = Read(trailing);
+  const std::string expected = trailing + ": the compressed data (" + std::to_string(lzf.size()) +
+    " bytes from byte " +
+    std::to_string(header.size() + 8) + ") ends at byte " + std::to_string(block.size()) +
+    ", but 12 more bytes follow it (the file has " + std::to_string(block.size() + 12) +
+    " bytes): a wrong compressed size, or data the header does not declare";
+  FEATUREPOINTS_CHECK(t.Errors.size() == 1 && t.Cloud->GetNumberOfPoints() == 0 &&
+      t.Message == expected,
+    "trailing compressed: [%s], expected [%s]", t.Message.c_str(), expected.c_str());
+  const std::string newline = PathOf("newline-compressed.pcd");
+  Spit(newline, block + "\n");
+  ReadResult n = Read(newline);
+  FEATUREPOINTS_CHECK(n.Errors.empty() && n.Cloud->GetNumberOfPoints() == 2,
+    "compressed data and a newline: %s", n.Message.c_str());
 }
 
 // An organized cloud (2 x 3) whose invalid points have NaN coordinates: skipped, and counted.
