@@ -1114,12 +1114,54 @@ std::string LegacyCellBlockProblem(LegacyWords& in, const std::string& fileName,
   return {};
 }
 
-// Why VTK's legacy reader failed on an ASCII file's cells, where it says "Error reading ascii
-// cell data!", "Unrecognized keyword", or nothing, or crashes: the first cell block (see
-// LegacyCellBlockProblem) or CELL_TYPES block whose values disagree with its line, named with
-// that line, or a number after a block's last value (a block that holds more than declared).
-// The walk ends, saying nothing, at the first section it does not read (field, point or cell
-// data) or a keyword it does not know.
+// A value as VTK's legacy reader reads one in ASCII (a '+' before it allowed).
+bool LegacyNumber(const std::string& word)
+{
+  double value = 0.0;
+  const char* first = word.data() + (word.size() > 1 && word[0] == '+' ? 1 : 0);
+  const char* end = word.data() + word.size();
+  const auto parsed = std::from_chars(first, end, value);
+  return parsed.ec == std::errc() && parsed.ptr == end;
+}
+
+// The `tuples` x `components` values of an ASCII array after its line (`what`, "the SCALARS
+// array 's' (line 8)"; `declared` says where the counts come from): the problem when the file
+// ends before them or a word that is no number stands among them (the next section's keyword: an
+// array shorter than declared), or "".
+std::string LegacyValuesProblem(LegacyWords& in, const std::string& fileName,
+  const std::string& what, long long tuples, long long components, const std::string& declared)
+{
+  const double product = static_cast<double>(tuples) * static_cast<double>(components);
+  const long long values = product > 4e18 ? 4000000000000000000LL : tuples * components;
+  std::string word;
+  for (long long v = 0; v < values; ++v)
+  {
+    if (!in.Next(word))
+    {
+      return fileName + ": " + what + " declares " + std::to_string(values) + " values (" +
+        declared + "); the file ends after " + std::to_string(v) + " of them";
+    }
+    if (!LegacyNumber(word))
+    {
+      return fileName + ":" + std::to_string(in.Line()) + ": " + QuotedWord(word) +
+        " where value " + std::to_string(v) + " (counting from 0) of the " +
+        std::to_string(values) + " that " + what + " declares (" + declared +
+        ") should be: the array holds " + std::to_string(v) + ", fewer than declared";
+    }
+  }
+  return {};
+}
+
+// Why VTK's legacy reader failed on an ASCII file's cells or attribute arrays, where it says
+// "Error reading ascii cell data!", "Possible mismatch of datasize with declaration",
+// "Unrecognized keyword", or nothing, or crashes: the first cell block (see
+// LegacyCellBlockProblem), CELL_TYPES block or array of point, cell or field data whose values
+// disagree with its line, named with that line, or a number after a block's or an array's last
+// value (one that holds more than declared). An array of POINT_DATA n or CELL_DATA n holds n
+// times its components' values (SCALARS, VECTORS, NORMALS, TENSORS, TEXTURE_COORDINATES,
+// COLOR_SCALARS, GLOBAL_IDS, PEDIGREE_IDS, EDGE_FLAGS), a field array its components times its
+// tuples, a LOOKUP_TABLE of size n 4 n. The walk ends, saying nothing, at an array of strings
+// (whose values are words) or a keyword it does not know.
 std::string LegacyCellsProblem(const std::string& fileName)
 {
   LegacyWords in(fileName);
@@ -1131,19 +1173,26 @@ std::string LegacyCellsProblem(const std::string& fileName)
   static const std::set<std::string> cellKeywords = { "VERTICES", "LINES", "POLYGONS",
     "TRIANGLE_STRIPS", "CELLS" };
   long long points = -1, cells = -1;
-  std::string after; // the block just read, for a number after its last value
+  long long totalCells = -1; // the cells of all cell blocks so far
+  long long items = -1;  // the points or cells of the data section (POINT_DATA n, CELL_DATA n)
+  std::string section;   // its line ("POINT_DATA 100")
+  std::string after; // the block or array just read, for a number after its last value
+  bool afterArray = false;
   std::string word, value;
   while (in.Next(word))
   {
-    long long number = 0;
-    if (!after.empty() && WholeNumber(word, number))
+    if (!after.empty() && LegacyNumber(word))
     {
       return fileName + ":" + std::to_string(in.Line()) + ": a number (" + QuotedWord(word) +
-        ") after the last value of " + after + ": the block holds more than its line declares";
+        ") after the last value of " + after +
+        (afterArray ? ": the array holds more values than declared"
+                    : ": the block holds more than its line declares");
     }
+    long long number = 0;
     const long line = in.Line();
     const std::string keyword = UpperCase(word);
     after.clear();
+    afterArray = false;
     if (keyword == "METADATA")
     {
       in.SkipMetadata(); // the information keys of the array before it
@@ -1178,6 +1227,7 @@ std::string LegacyCellsProblem(const std::string& fileName)
       {
         return problem;
       }
+      totalCells = std::max(totalCells, 0LL) + cells;
       after = "the " + keyword + " block (line " + std::to_string(line) + ")";
       continue;
     }
@@ -1211,6 +1261,199 @@ std::string LegacyCellsProblem(const std::string& fileName)
         }
       }
       after = "the CELL_TYPES block (line " + std::to_string(line) + ")";
+      continue;
+    }
+    if (keyword == "DIMENSIONS")
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        if (!in.Next(word))
+        {
+          return {};
+        }
+      }
+      continue;
+    }
+    if (keyword == "POINT_DATA" || keyword == "CELL_DATA")
+    {
+      const bool pointData = keyword == "POINT_DATA";
+      if (!in.Next(word))
+      {
+        return {};
+      }
+      if (!WholeNumber(word, items))
+      {
+        return fileName + ":" + std::to_string(line) + ": the " + keyword + " line declares " +
+          QuotedWord(word) + (pointData ? " points" : " cells") + ", not a whole number of 0 or more";
+      }
+      // VTK's reader says "Number of cells don't match number data values!" for a CELL_DATA
+      // line of other cells than the data set's; for POINT_DATA it reads on, misaligned.
+      const long long declared = pointData ? points : totalCells;
+      if (declared >= 0 && items != declared)
+      {
+        return fileName + ":" + std::to_string(line) + ": the " + keyword + " line declares " +
+          std::to_string(items) +
+          (pointData ? " points, but the POINTS line declares " : " cells, but the cell blocks hold ") +
+          std::to_string(declared) + " (a corrupt count)";
+      }
+      section = keyword + " " + word;
+      continue;
+    }
+    // An attribute array: `KEYWORD name type` (and its components, per keyword).
+    std::string name, type;
+    long long per = 1;
+    std::string perText;
+    auto stringType = [](const std::string& t) {
+      const std::string upper = UpperCase(t);
+      return upper == "STRING" || upper == "UTF8_STRING" || upper == "VARIANT";
+    };
+    if (keyword == "SCALARS" || keyword == "VECTORS" || keyword == "NORMALS" ||
+      keyword == "TENSORS" || keyword == "TENSORS6" || keyword == "TEXTURE_COORDINATES" ||
+      keyword == "COLOR_SCALARS" || keyword == "GLOBAL_IDS" || keyword == "PEDIGREE_IDS" ||
+      keyword == "EDGE_FLAGS")
+    {
+      if (items < 0 || !in.Next(name) || !in.Next(type))
+      {
+        return {};
+      }
+      if (keyword == "SCALARS")
+      {
+        // SCALARS name type [components], then LOOKUP_TABLE name.
+        if (!in.Next(word))
+        {
+          return {};
+        }
+        if (UpperCase(word) != "LOOKUP_TABLE")
+        {
+          if (!WholeNumber(word, per) || per < 1 || !in.Next(word) ||
+            UpperCase(word) != "LOOKUP_TABLE")
+          {
+            return {};
+          }
+        }
+        if (!in.Next(word))
+        {
+          return {};
+        }
+      }
+      else if (keyword == "TEXTURE_COORDINATES")
+      {
+        // TEXTURE_COORDINATES name dimension type.
+        if (!WholeNumber(type, per) || per < 1 || !in.Next(type))
+        {
+          return {};
+        }
+      }
+      else if (keyword == "COLOR_SCALARS")
+      {
+        // COLOR_SCALARS name components (values from 0 to 1 in ASCII files).
+        if (!WholeNumber(type, per) || per < 1)
+        {
+          return {};
+        }
+        type = "float";
+      }
+      else if (keyword == "VECTORS" || keyword == "NORMALS")
+      {
+        per = 3;
+      }
+      else if (keyword == "TENSORS")
+      {
+        per = 9;
+      }
+      else if (keyword == "TENSORS6")
+      {
+        per = 6;
+      }
+      if (stringType(type))
+      {
+        return {};
+      }
+      perText = std::to_string(per) + " component" + (per == 1 ? "" : "s");
+      const std::string what =
+        "the " + keyword + " array " + QuotedWord(name) + " (line " + std::to_string(line) + ")";
+      const std::string problem = LegacyValuesProblem(
+        in, fileName, what, items, per, section + ", " + perText + " each");
+      if (!problem.empty())
+      {
+        return problem;
+      }
+      after = what;
+      afterArray = true;
+      continue;
+    }
+    if (keyword == "LOOKUP_TABLE")
+    {
+      long long size = 0;
+      if (!in.Next(name) || !in.Next(word) || !WholeNumber(word, size))
+      {
+        return {};
+      }
+      const std::string what =
+        "the LOOKUP_TABLE " + QuotedWord(name) + " (line " + std::to_string(line) + ")";
+      const std::string problem =
+        LegacyValuesProblem(in, fileName, what, size, 4, "size " + word + ", 4 values each");
+      if (!problem.empty())
+      {
+        return problem;
+      }
+      after = what;
+      afterArray = true;
+      continue;
+    }
+    if (keyword == "FIELD")
+    {
+      long long arrays = 0;
+      if (!in.Next(name) || !in.Next(word) || !WholeNumber(word, arrays))
+      {
+        return {};
+      }
+      for (long long a = 0; a < arrays; ++a)
+      {
+        std::string components, tuples;
+        if (!in.Next(name))
+        {
+          return {};
+        }
+        if (name == "METADATA")
+        {
+          in.SkipMetadata(); // the information keys of the array before it
+          --a;
+          continue;
+        }
+        if (a > 0 && LegacyNumber(name))
+        {
+          return fileName + ":" + std::to_string(in.Line()) + ": a number (" + QuotedWord(name) +
+            ") after the last value of " + after + ": the array holds more values than declared";
+        }
+        if (name == "NULL_ARRAY")
+        {
+          continue;
+        }
+        const long arrayLine = in.Line();
+        long long c = 0, t = 0;
+        if (!in.Next(components) || !in.Next(tuples) || !in.Next(type) || stringType(type))
+        {
+          return {};
+        }
+        if (!WholeNumber(components, c) || !WholeNumber(tuples, t))
+        {
+          // VTK's reader crashes on a negative count.
+          return fileName + ":" + std::to_string(arrayLine) + ": the field array " +
+            QuotedWord(name) + " declares " + QuotedWord(components) + " components and " +
+            QuotedWord(tuples) + " tuples: not whole numbers of 0 or more (a corrupt count)";
+        }
+        const std::string what = "the field array " + QuotedWord(name) + " (line " +
+          std::to_string(arrayLine) + ")";
+        const std::string problem = LegacyValuesProblem(
+          in, fileName, what, t, c, tuples + " tuples of " + components + " components");
+        if (!problem.empty())
+        {
+          return problem;
+        }
+        after = what;
+        afterArray = true;
+      }
       continue;
     }
     return {};

@@ -1078,6 +1078,27 @@ void LegacyFiles()
   refused("legacy VTK grid cut in its cell types", "types-cut.vtk", grid + "CELL_TYPES 3\n1\n1\n",
     "types-cut.vtk: the CELL_TYPES block (line 11) declares 3 cell types; the file ends after 2 "
     "of them");
+  // Point and cell data arrays cut short or holding more than declared: VTK's reader said only
+  // "Error reading ascii data. Possible mismatch of datasize with declaration." (or "Unrecognized
+  // keyword"); the array, its line and the counts are named.
+  const std::string data = three + "POINT_DATA 3\nSCALARS s float 1\nLOOKUP_TABLE default\n";
+  refused("legacy VTK whose point data ends early", "data-end.vtk", header + data + "1 2\n",
+    "data-end.vtk: the SCALARS array 's' (line 8) declares 3 values (POINT_DATA 3, 1 component "
+    "each); the file ends after 2 of them");
+  refused("legacy VTK whose point data holds fewer values than declared", "data-few.vtk",
+    header + data + "1 2\nNORMALS n float\n0 0 1 0 0 1 0 0 1\n",
+    "data-few.vtk:11: 'NORMALS' where value 2 (counting from 0) of the 3 that the SCALARS array "
+    "'s' (line 8) declares (POINT_DATA 3, 1 component each) should be: the array holds 2, fewer "
+    "than declared");
+  refused("legacy VTK whose point data holds more values than declared", "data-more.vtk",
+    header + data + "1 2 3\n4\n",
+    "data-more.vtk:11: a number ('4') after the last value of the SCALARS array 's' (line 8): the "
+    "array holds more values than declared");
+  refused("legacy VTK whose cell data field array is cut short", "data-cells.vtk",
+    header + three + "VERTICES 3 6\n1 0\n1 1\n1 2\nCELL_DATA 3\nFIELD FieldData 2\nc 1 3 int\n"
+      "1 2 3\nd 2 3 float\n1 2 3 4 5\n",
+    "data-cells.vtk: the field array 'd' (line 15) declares 6 values (3 tuples of 2 components); "
+    "the file ends after 5 of them");
   // Binary, a cells line whose counts cannot be: VTK's reader crashed or said "Unrecognized
   // keyword:".
   const std::string cellsBinary =
@@ -1098,6 +1119,16 @@ void LegacyFiles()
     "cells-binary-plus.vtk: the cells line 'VERTICES +3 6" + atByte +
       " needs 24 bytes of binary data after it, but the file ends 8 bytes after it (a file cut "
       "short)");
+  // ASCII, a POINT_DATA line of other points than the POINTS line's (VTK's reader read on,
+  // misaligned: "Unsupported point attribute type").
+  refused("legacy VTK whose POINT_DATA count is not its points'", "point-data-count.vtk",
+    header + three + "POINT_DATA 2\nSCALARS s float 1\nLOOKUP_TABLE default\n1 2\n",
+    "point-data-count.vtk:7: the POINT_DATA line declares 2 points, but the POINTS line declares 3 "
+    "(a corrupt count)");
+  refused("legacy VTK with a negative field array count", "field-negative-ascii.vtk",
+    header + three + "POINT_DATA 3\nFIELD FieldData 1\nf 1 -3 float\n1 2 3\n",
+    "field-negative-ascii.vtk:9: the field array 'f' declares '1' components and '-3' tuples: not "
+    "whole numbers of 0 or more (a corrupt count)");
   // What VTK's reader reads is not refused: a '+' and leading zeros in the count; field data
   // before the points whose array is named POINTS (its line is no data set's POINTS line).
   Spit(Path("plus.vtk"), header + "POINTS +0003 float\n0 0 0 1 0 0 0 1 0\n");
