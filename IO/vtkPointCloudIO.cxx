@@ -1578,7 +1578,47 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     return true;
   };
   long long items = 0; // the current section's points or cells
+  long long points = -1, cells = -1; // the POINTS line's points; the cell blocks' cells so far
   const bool ids64 = version >= 5.0;
+  // A big-endian integer of `bytes` bytes at byte `at` of the file (read through a window of
+  // 64 KiB); false past the file's end.
+  std::vector<char> window;
+  long long windowStart = -1;
+  auto integerAt = [&](long long at, int bytes, bool isSigned, long long& value) {
+    if (windowStart < 0 || at < windowStart ||
+      at + bytes > windowStart + static_cast<long long>(window.size()))
+    {
+      window.resize(size_t(1) << 16);
+      file.clear();
+      file.seekg(at);
+      file.read(window.data(), static_cast<std::streamsize>(window.size()));
+      window.resize(static_cast<size_t>(file.gcount()));
+      file.clear();
+      windowStart = at;
+      if (static_cast<long long>(window.size()) < bytes)
+      {
+        return false;
+      }
+    }
+    uint64_t bits = 0;
+    for (int b = 0; b < bytes; ++b)
+    {
+      bits = (bits << 8) | static_cast<unsigned char>(window[static_cast<size_t>(at - windowStart + b)]);
+    }
+    if (isSigned && bytes < 8 && (bits >> (8 * bytes - 1)) != 0)
+    {
+      bits |= ~uint64_t(0) << (8 * bytes); // sign-extended
+    }
+    value = !isSigned && bits > uint64_t(std::numeric_limits<long long>::max())
+      ? std::numeric_limits<long long>::max()
+      : static_cast<long long>(bits);
+    return true;
+  };
+  // Where a line stands in a message: its number before the first binary block, its byte after.
+  auto located = [&](const std::string& what) {
+    return fileName + (binaryBefore ? std::string() : ":" + std::to_string(number)) + ": " +
+      what + (binaryBefore ? " at byte " + std::to_string(lineStart) : std::string());
+  };
   while (next(words))
   {
     const std::string keyword = UpperCase(words[0]);
@@ -1600,6 +1640,7 @@ std::string LegacyBinaryProblem(const std::string& fileName)
       {
         return problem;
       }
+      points = n;
     }
     else if ((keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" ||
                keyword == "TRIANGLE_STRIPS" || keyword == "CELLS") &&
@@ -1624,11 +1665,50 @@ std::string LegacyBinaryProblem(const std::string& fileName)
         {
           return problem;
         }
+        // n cells, each its number of points k and k point ids, in m 4-byte ints: each k must
+        // leave its ids within the m values (VTK's reader crashes on a huge one, or says "Number
+        // of cells don't match number data values!").
+        const long long start = static_cast<long long>(file.tellg()) - 4 * m;
+        long long used = 0;
+        for (long long c = 0; c < n; ++c)
+        {
+          long long k = 0;
+          const long long byte = start + 4 * used;
+          if (used >= m || !integerAt(byte, 4, true, k))
+          {
+            return cellsLine("declares " + std::to_string(n) + " cells in " + std::to_string(m) +
+              " values, but its first " + std::to_string(c) + " cells hold all " +
+              std::to_string(m) + " (a corrupt count or size)");
+          }
+          if (k < 0 || k > m - used - 1)
+          {
+            return located("cell " + std::to_string(c) + " (counting from 0) of the cells line " +
+                     quoted) +
+              " declares " + std::to_string(k) + (k == 1 ? " point" : " points") + " at byte " +
+              std::to_string(byte) +
+              (k < 0 ? std::string(", not a count of 0 or more")
+                     : ": more than the " + std::to_string(m - used - 1) +
+                    (m - used - 1 == 1 ? " value" : " values") + " left of the " +
+                    std::to_string(m) + " that its line declares") +
+              " (a corrupt count)";
+          }
+          used += 1 + k;
+        }
+        if (used != m)
+        {
+          return cellsLine("declares " + std::to_string(n) + " cells in " + std::to_string(m) +
+            " values, but its cells hold " + std::to_string(used) + " (a corrupt count or size)");
+        }
+        file.seekg(start + 4 * m);
+        cells = std::max(cells, 0LL) + n;
         continue;
       }
       // Version 5: OFFSETS (n values) and CONNECTIVITY (m values), each with its type.
-      for (const long long values : { n, m })
+      const std::string cellsQuoted = quoted;
+      const long long cellsStart = lineStart;
+      for (int part = 0; part < 2; ++part)
       {
+        const long long values = part == 0 ? n : m;
         if (!next(words) || words.size() < 2)
         {
           return {};
@@ -1638,18 +1718,78 @@ std::string LegacyBinaryProblem(const std::string& fileName)
         {
           return problem;
         }
+        // The offsets: from 0, never decreasing, the last the connectivity's m values (VTK's
+        // reader crashes on others).
+        const int bytes = static_cast<int>(bytesOf(words[1], 1));
+        if (part == 1 || bytes <= 0 || bytes > 8)
+        {
+          continue;
+        }
+        const bool isSigned = words[1].compare(0, 8, "unsigned") != 0 && words[1] != "vtktypeuint64";
+        const long long start = static_cast<long long>(file.tellg()) - bytes * n;
+        long long previous = 0;
+        for (long long v = 0; v < n; ++v)
+        {
+          long long offset = 0;
+          const long long byte = start + bytes * v;
+          if (!integerAt(byte, bytes, isSigned, offset))
+          {
+            return {};
+          }
+          const std::string which =
+            located("offset " + std::to_string(v) + " (counting from 0) of " + what) + " is " +
+            std::to_string(offset) + " (at byte " + std::to_string(byte) + ")";
+          if (v == 0 && offset != 0)
+          {
+            return which + ", not 0 (a corrupt offset)";
+          }
+          if (offset < previous)
+          {
+            return which + ", less than the one before it (" + std::to_string(previous) +
+              "; a corrupt offset)";
+          }
+          if (v == n - 1 && offset != m)
+          {
+            return which + ", the last, but the cells line " + cellsQuoted + " at byte " +
+              std::to_string(cellsStart) + " declares " + std::to_string(m) +
+              " connectivity values (a corrupt offset or count)";
+          }
+          previous = offset;
+        }
+        file.seekg(start + bytes * n);
       }
+      cells = std::max(cells, 0LL) + std::max(n - 1, 0LL);
     }
     else if (keyword == "CELL_TYPES" && words.size() >= 2 && WholeNumber(words[1], n))
     {
+      if (cells >= 0 && n != cells)
+      {
+        return located("the CELL_TYPES line " + quoted) + " declares " + std::to_string(n) +
+          " cell types for the " + std::to_string(cells) + " cells of the cells block (a corrupt count)";
+      }
       if (!block(mul(4, n), "the CELL_TYPES line " + quoted))
       {
         return problem;
       }
     }
     else if ((keyword == "POINT_DATA" || keyword == "CELL_DATA") && words.size() >= 2 &&
-      WholeNumber(words[1], n))
+      !WholeNumber(words[1], n))
     {
+      return located("the " + keyword + " line " + quoted) + " declares " + QuotedWord(words[1]) +
+        (keyword == "POINT_DATA" ? " points" : " cells") + ", not a whole number of 0 or more";
+    }
+    else if (keyword == "POINT_DATA" || keyword == "CELL_DATA")
+    {
+      // VTK's reader says "Number of cells don't match number data values!" for a CELL_DATA
+      // line of other cells than the data set's; for POINT_DATA it reads on, misaligned.
+      const long long declared = keyword == "POINT_DATA" ? points : cells;
+      if (declared >= 0 && n != declared)
+      {
+        return located("the " + keyword + " line " + quoted) + " declares " + std::to_string(n) +
+          (keyword == "POINT_DATA" ? " points, but the POINTS line declares "
+                                   : " cells, but the cell blocks hold ") +
+          std::to_string(declared) + " (a corrupt count)";
+      }
       items = n;
     }
     else if (keyword == "SCALARS" && words.size() >= 3)
@@ -1723,10 +1863,16 @@ std::string LegacyBinaryProblem(const std::string& fileName)
           continue;
         }
         long long components = 0, tuples = 0;
-        if (words.size() < 4 || !WholeNumber(words[1], components) ||
-          !WholeNumber(words[2], tuples))
+        if (words.size() < 4)
         {
           return {};
+        }
+        if (!WholeNumber(words[1], components) || !WholeNumber(words[2], tuples))
+        {
+          // VTK's reader crashes on a negative count.
+          return located("the field array line " + quotedLine()) + " declares " +
+            QuotedWord(words[1]) + " components and " + QuotedWord(words[2]) +
+            " tuples: not whole numbers of 0 or more (a corrupt count)";
         }
         const std::string what = "the field array line " + quotedLine();
         if (!block(bytesOf(words[3], mul(components, tuples)), what))

@@ -34,10 +34,12 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <random>
 #include <set>
@@ -1119,6 +1121,56 @@ void LegacyFiles()
     "cells-binary-plus.vtk: the cells line 'VERTICES +3 6" + atByte +
       " needs 24 bytes of binary data after it, but the file ends 8 bytes after it (a file cut "
       "short)");
+  // Binary, a corrupt count inside a cells block (VTK's reader crashed on 2^31 - 1, or said
+  // "Number of cells don't match number data values!"): the cell, its line and the count's byte.
+  auto bigEndian = [](std::initializer_list<uint32_t> values) {
+    std::string bytes;
+    for (const uint32_t v : values)
+    {
+      for (int shift = 24; shift >= 0; shift -= 8)
+      {
+        bytes += static_cast<char>((v >> shift) & 0xFF);
+      }
+    }
+    return bytes;
+  };
+  const std::string verticesLine = "VERTICES 3 6\n";
+  const std::string countByte = std::to_string(cellsBinary.size() + verticesLine.size() + 8);
+  refused("binary legacy VTK with a corrupt cell count", "cells-binary-count.vtk",
+    cellsBinary + verticesLine + bigEndian({ 1, 0, 0x7FFFFFFF, 1, 1, 2 }) + "\n",
+    "cells-binary-count.vtk: cell 1 (counting from 0) of the cells line 'VERTICES 3 6" + atByte +
+      " declares 2147483647 points at byte " + countByte +
+      ": more than the 3 values left of the 6 that its line declares (a corrupt count)");
+  refused("binary legacy VTK with a negative cell count", "cells-binary-negative.vtk",
+    cellsBinary + verticesLine + bigEndian({ 1, 0, 0xFFFFFFFF, 1, 1, 2 }) + "\n" +
+      "CELL_DATA 3\nSCALARS c int 1\nLOOKUP_TABLE default\n" + bigEndian({ 1, 2, 3 }),
+    "cells-binary-negative.vtk: cell 1 (counting from 0) of the cells line 'VERTICES 3 6" +
+      atByte + " declares -1 points at byte " + countByte + ", not a count of 0 or more");
+  const std::string cellData = cellsBinary + verticesLine + bigEndian({ 1, 0, 1, 1, 1, 2 }) + "\n";
+  refused("binary legacy VTK whose CELL_DATA count is not its cells'", "cell-data-count.vtk",
+    cellData + "CELL_DATA 2\nSCALARS c int 1\nLOOKUP_TABLE default\n" + bigEndian({ 1, 2 }),
+    "cell-data-count.vtk: the CELL_DATA line 'CELL_DATA 2' at byte " +
+      std::to_string(cellData.size()) + " declares 2 cells, but the cell blocks hold 3 (a corrupt "
+      "count)");
+  const std::string fieldLine = cellData + "CELL_DATA 3\nFIELD FieldData 1\n";
+  refused("binary legacy VTK with a negative field array count", "field-negative.vtk",
+    fieldLine + "f 1 -3 int\n" + bigEndian({ 1, 2, 3 }),
+    "field-negative.vtk: the field array line 'f 1 -3 int' at byte " +
+      std::to_string(fieldLine.size()) + " declares '1' components and '-3' tuples: not whole "
+      "numbers of 0 or more (a corrupt count)");
+  // Version 5: the last offset is not the connectivity's size, which holds a value more than its
+  // line declares (VTK's reader read on, misaligned: "Unrecognized keyword").
+  const std::string cells51 = "# vtk DataFile Version 5.1\nt\nBINARY\nDATASET POLYDATA\n"
+                              "POINTS 3 float\n" + std::string(36, '\0') + "\nVERTICES 4 2\n";
+  const std::string offsetsLine = cells51 + "OFFSETS vtktypeint64\n";
+  refused("binary legacy VTK 5.1 whose last offset is not its connectivity's size",
+    "offsets-binary.vtk",
+    offsetsLine + bigEndian({ 0, 0, 0, 1, 0, 2, 0, 3 }) + "\nCONNECTIVITY vtktypeint64\n" +
+      bigEndian({ 0, 0, 0, 1, 0, 2 }) + "\n",
+    "offsets-binary.vtk: offset 3 (counting from 0) of the line 'OFFSETS vtktypeint64' at byte " +
+      std::to_string(cells51.size()) + " is 3 (at byte " + std::to_string(offsetsLine.size() + 24) +
+      "), the last, but the cells line 'VERTICES 4 2' at byte " +
+      std::to_string(cells51.size() - 13) + " declares 2 connectivity values");
   // ASCII, a POINT_DATA line of other points than the POINTS line's (VTK's reader read on,
   // misaligned: "Unsupported point attribute type").
   refused("legacy VTK whose POINT_DATA count is not its points'", "point-data-count.vtk",
