@@ -3,6 +3,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDataArraySelection.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDataSetReader.h"
 #include "vtkDataSetWriter.h"
@@ -2073,6 +2074,147 @@ bool CheckPieceCounts(
   return true;
 }
 
+// An XML attribute's value as the parser gives it: the five named entities and character
+// references replaced.
+std::string XMLAttributeText(const std::string& text)
+{
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i)
+  {
+    const size_t end = text[i] == '&' ? text.find(';', i) : std::string::npos;
+    if (end == std::string::npos || end - i > 10)
+    {
+      out += text[i];
+      continue;
+    }
+    const std::string entity = text.substr(i + 1, end - i - 1);
+    static const std::map<std::string, char> named = { { "amp", '&' }, { "lt", '<' },
+      { "gt", '>' }, { "quot", '"' }, { "apos", '\'' } };
+    const auto found = named.find(entity);
+    unsigned long code = 0;
+    char* stop = nullptr;
+    if (found != named.end())
+    {
+      out += found->second;
+    }
+    else if (entity.size() > 1 && entity[0] == '#' &&
+      (code = std::strtoul(entity.c_str() + (entity[1] == 'x' ? 2 : 1), &stop,
+         entity[1] == 'x' ? 16 : 10),
+        stop && *stop == '\0') &&
+      code > 0 && code < 0x110000)
+    {
+      // UTF-8, as the parser hands names on.
+      if (code < 0x80)
+      {
+        out += static_cast<char>(code);
+      }
+      else if (code < 0x800)
+      {
+        out += static_cast<char>(0xC0 | (code >> 6));
+        out += static_cast<char>(0x80 | (code & 0x3F));
+      }
+      else if (code < 0x10000)
+      {
+        out += static_cast<char>(0xE0 | (code >> 12));
+        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (code & 0x3F));
+      }
+      else
+      {
+        out += static_cast<char>(0xF0 | (code >> 18));
+        out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (code & 0x3F));
+      }
+    }
+    else
+    {
+      out += text[i];
+      continue;
+    }
+    i = end;
+  }
+  return out;
+}
+
+// A String array of a piece's point or cell data in a VTK XML file (VTK's reader crashes on one
+// that holds fewer strings than its tuples and components call for): its name as the reader
+// reads it, whether it is cell data, and what it holds where that can be told from its text (an
+// ASCII array: "2 strings for 3 points").
+struct XMLStringArray
+{
+  std::string Name;
+  bool Cells = false;
+  std::string Holds;
+};
+
+std::vector<XMLStringArray> XMLStringArrays(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  std::string head;
+  const size_t appended = ReadXMLHead(in, head);
+  std::vector<XMLStringArray> found;
+  // Whether `tag` lies inside an element `name` (the last "<name" before it, not closed since).
+  auto inside = [&head](size_t tag, const std::string& name) {
+    const size_t open = head.rfind("<" + name, tag);
+    const size_t close = head.rfind("</" + name + ">", tag);
+    return open != std::string::npos && (close == std::string::npos || close < open);
+  };
+  for (const auto& entry : DataArrayTags(head, appended))
+  {
+    const std::string& tag = entry.second;
+    const bool points = inside(entry.first, "PointData");
+    const bool cells = inside(entry.first, "CellData");
+    const std::string name = TagAttribute(tag, "Name");
+    if (TagAttribute(tag, "type") != "String" || (!points && !cells) || name.empty())
+    {
+      continue; // an unnamed array of point or cell data is not read
+    }
+    XMLStringArray array;
+    array.Name = XMLAttributeText(name);
+    array.Cells = cells && !points;
+    const size_t piece = head.rfind("<Piece", entry.first);
+    const size_t pieceEnd = piece == std::string::npos ? piece : head.find('>', piece);
+    const size_t close = head.find("</DataArray>", entry.first);
+    long long components = 1, tuples = -1;
+    const std::string componentText = TagAttribute(tag, "NumberOfComponents");
+    if (pieceEnd != std::string::npos && close != std::string::npos &&
+      TagAttribute(tag, "format") == "ascii" &&
+      (componentText.empty() || WholeNumber(componentText, components)) &&
+      WholeNumber(TagAttribute(head.substr(piece, pieceEnd - piece),
+                    array.Cells ? "NumberOfCells" : "NumberOfPoints"),
+        tuples))
+    {
+      // ASCII strings: their bytes as numbers, each string ended by a 0.
+      std::istringstream values(head.substr(entry.first + tag.size() + 1,
+        close - std::min(close, entry.first + tag.size() + 1)));
+      long long strings = 0, index = 0;
+      for (std::string word; values >> word; ++index)
+      {
+        long long code = 0;
+        const char* first = word.data() + (word[0] == '-' ? 1 : 0);
+        const auto parsed = std::from_chars(first, word.data() + word.size(), code);
+        if (parsed.ec != std::errc() || parsed.ptr != word.data() + word.size() || code > 255 ||
+          (word[0] == '-' && code > 128))
+        {
+          array.Holds = QuotedWord(word) + " as value " + std::to_string(index) +
+            " (counting from 0), not a character's code";
+          break;
+        }
+        strings += code == 0 ? 1 : 0;
+      }
+      if (array.Holds.empty())
+      {
+        array.Holds = std::to_string(strings) + " string" + (strings == 1 ? "" : "s") + " for " +
+          std::to_string(tuples) + (array.Cells ? " cell" : " point") + (tuples == 1 ? "" : "s") +
+          (components > 1 ? " of " + std::to_string(components) + " components" : std::string());
+      }
+    }
+    found.push_back(array);
+  }
+  return found;
+}
+
 // The value of a base64 digit (0-63); -1 for any other character ('=' included).
 int Base64Digit(char c)
 {
@@ -2788,8 +2930,23 @@ bool vtkPointCloudIO::ReadPolyData(
 }
 
 vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& fileName,
-  const std::string& extension, std::string& error, vtkCommand* observer)
+  const std::string& extension, std::string& error, vtkCommand* observer,
+  const std::vector<std::pair<std::string, bool>>& leaveOut)
 {
+  // The arrays to leave out, once the reader knows the file's arrays.
+  auto select = [&leaveOut](vtkXMLReader* r) {
+    if (leaveOut.empty())
+    {
+      return;
+    }
+    ScopedCapture capture(false); // the read below says what is wrong, if anything
+    r->UpdateInformation();
+    for (const auto& array : leaveOut)
+    {
+      (array.second ? r->GetCellDataArraySelection() : r->GetPointDataArraySelection())
+        ->DisableArray(array.first.c_str());
+    }
+  };
   vtkSmartPointer<vtkAlgorithm> reader;
   if (extension == "ply")
   {
@@ -2814,12 +2971,14 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadWithReader(const std::string& 
   {
     auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     r->SetFileName(fileName.c_str());
+    select(r);
     reader = r;
   }
   else if (extension == "vtu")
   {
     auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
     r->SetFileName(fileName.c_str());
+    select(r);
     reader = r;
   }
   else if (extension == "vtk")
@@ -2977,90 +3136,137 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fi
   }
   const double limit =
     ReaderTimeLimitSeconds > 0.0 ? ReaderTimeLimitSeconds : 60.0 + fileSize / 4e6;
-  std::fflush(nullptr);
-  const pid_t pid = ::fork();
-  if (pid < 0)
+  // One read in a child process; its wait status, or -1 when no child could be started.
+  auto readInChild = [&](const std::vector<std::pair<std::string, bool>>& leaveOut) -> int {
+    std::fflush(nullptr);
+    ::ftruncate(memory, 0);
+    ::lseek(memory, 0, SEEK_SET);
+    const pid_t pid = ::fork();
+    if (pid < 0)
+    {
+      return -1;
+    }
+    if (pid == 0)
+    {
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL); // ends with its parent (killed by a signal, say)
+      std::signal(SIGALRM, SIG_DFL);
+      const rlimit core = { 0, 0 };
+      ::setrlimit(RLIMIT_CORE, &core);
+  #ifndef FEATUREPOINTS_IO_SANITIZED
+      // No more address space than the machine has memory: a huge declared count fails at once.
+      // A legacy file is not compressed: what it holds takes a few times its size in memory, so
+      // its reader gets 2 GiB plus 64 times the file's size at most (a 20 KB file that declares a
+      // billion cells took all of 24 GB for a minute before failing).
+      const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+      if (pages > 0 && pageSize > 0)
+      {
+        double bytes = static_cast<double>(pages) * static_cast<double>(pageSize);
+        if (extension == "vtk")
+        {
+          // Beyond the address space this process already has from its parent (a host
+          // application's threads and data: the limit counts them too).
+          double current = 0.0;
+          if (FILE* statm = std::fopen("/proc/self/statm", "r"))
+          {
+            unsigned long size = 0;
+            if (std::fscanf(statm, "%lu", &size) == 1)
+            {
+              current = static_cast<double>(size) * static_cast<double>(pageSize);
+            }
+            std::fclose(statm);
+          }
+          bytes = std::min(bytes, current + 2147483648.0 + 64.0 * fileSize);
+        }
+        const rlimit space = { static_cast<rlim_t>(bytes), static_cast<rlim_t>(bytes) };
+        ::setrlimit(RLIMIT_AS, &space);
+      }
+  #endif
+      ::alarm(static_cast<unsigned>(std::min(limit, 1e6)));
+      std::string childError;
+      vtkSmartPointer<vtkPointSet> cloud;
+      try
+      {
+        cloud = ReadWithReader(fileName, extension, childError, observer, leaveOut);
+      }
+      catch (const std::exception& e)
+      {
+        childError = WithFile(fileName, "cannot read: " + ExceptionText(e));
+      }
+      if (!cloud)
+      {
+        WriteAll(memory, childError);
+        ::_exit(3);
+      }
+      vtkNew<vtkDataSetWriter> writer;
+      writer->SetInputData(cloud);
+      writer->SetFileTypeToBinary();
+      const std::string path = "/proc/self/fd/" + std::to_string(memory);
+      writer->SetFileName(path.c_str());
+      ScopedCapture capture(false);
+      try
+      {
+        if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError)
+        {
+          WriteAll(memory, fileName + ": cannot read: not enough memory to hand the cloud over");
+          ::_exit(3);
+        }
+      }
+      catch (const std::exception& e)
+      {
+        ::ftruncate(memory, 0);
+        ::lseek(memory, 0, SEEK_SET);
+        WriteAll(memory, WithFile(fileName, "cannot read: " + ExceptionText(e)));
+        ::_exit(3);
+      }
+      ::_exit(0);
+    }
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+    {
+    }
+    return status;
+  };
+  int status = readInChild({});
+  if (status < 0)
   {
     ::close(memory);
     return ReadWithReader(fileName, extension, error, observer);
   }
-  if (pid == 0)
+  // VTK's XML readers crash on a String array of point or cell data that holds fewer strings
+  // than its tuples call for: read again without the file's String arrays, and say so.
+  std::vector<XMLStringArray> leftOut;
+  if (WIFSIGNALED(status) && WTERMSIG(status) != SIGALRM && WTERMSIG(status) != SIGXCPU &&
+    (extension == "vtp" || extension == "vtu"))
   {
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL); // ends with its parent (killed by a signal, say)
-    std::signal(SIGALRM, SIG_DFL);
-    const rlimit core = { 0, 0 };
-    ::setrlimit(RLIMIT_CORE, &core);
-#ifndef FEATUREPOINTS_IO_SANITIZED
-    // No more address space than the machine has memory: a huge declared count fails at once.
-    // A legacy file is not compressed: what it holds takes a few times its size in memory, so
-    // its reader gets 2 GiB plus 64 times the file's size at most (a 20 KB file that declares a
-    // billion cells took all of 24 GB for a minute before failing).
-    const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
-    if (pages > 0 && pageSize > 0)
+    leftOut = XMLStringArrays(fileName);
+    std::vector<std::pair<std::string, bool>> names;
+    for (const XMLStringArray& array : leftOut)
     {
-      double bytes = static_cast<double>(pages) * static_cast<double>(pageSize);
-      if (extension == "vtk")
+      names.emplace_back(array.Name, array.Cells);
+    }
+    const int again = names.empty() ? -1 : readInChild(names);
+    if (again >= 0 && WIFEXITED(again) && WEXITSTATUS(again) == 0)
+    {
+      for (const XMLStringArray& array : leftOut)
       {
-        // Beyond the address space this process already has from its parent (a host
-        // application's threads and data: the limit counts them too).
-        double current = 0.0;
-        if (FILE* statm = std::fopen("/proc/self/statm", "r"))
-        {
-          unsigned long size = 0;
-          if (std::fscanf(statm, "%lu", &size) == 1)
-          {
-            current = static_cast<double>(size) * static_cast<double>(pageSize);
-          }
-          std::fclose(statm);
-        }
-        bytes = std::min(bytes, current + 2147483648.0 + 64.0 * fileSize);
+        vtkGenericWarningMacro(<< fileName << ": " << (array.Cells ? "cell" : "point")
+                               << " array " << QuotedWord(array.Name)
+                               << " (type String) left out: VTK's reader crashes on "
+                               << (leftOut.size() == 1 ? "it" : "the file's String arrays")
+                               << " (" << strsignal(WTERMSIG(status)) << "; "
+                               << (array.Holds.empty()
+                                      ? "fewer strings than its tuples and components call for, "
+                                        "or corrupt data"
+                                      : "it holds " + array.Holds)
+                               << "); the cloud is read without "
+                               << (leftOut.size() == 1 ? "it" : "them"));
       }
-      const rlimit space = { static_cast<rlim_t>(bytes), static_cast<rlim_t>(bytes) };
-      ::setrlimit(RLIMIT_AS, &space);
+      status = again;
     }
-#endif
-    ::alarm(static_cast<unsigned>(std::min(limit, 1e6)));
-    std::string childError;
-    vtkSmartPointer<vtkPointSet> cloud;
-    try
+    else if (again >= 0 && WIFEXITED(again))
     {
-      cloud = ReadWithReader(fileName, extension, childError, observer);
+      status = again; // the reader's own error without those arrays: the file's first problem
     }
-    catch (const std::exception& e)
-    {
-      childError = WithFile(fileName, "cannot read: " + ExceptionText(e));
-    }
-    if (!cloud)
-    {
-      WriteAll(memory, childError);
-      ::_exit(3);
-    }
-    vtkNew<vtkDataSetWriter> writer;
-    writer->SetInputData(cloud);
-    writer->SetFileTypeToBinary();
-    const std::string path = "/proc/self/fd/" + std::to_string(memory);
-    writer->SetFileName(path.c_str());
-    ScopedCapture capture(false);
-    try
-    {
-      if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError)
-      {
-        WriteAll(memory, fileName + ": cannot read: not enough memory to hand the cloud over");
-        ::_exit(3);
-      }
-    }
-    catch (const std::exception& e)
-    {
-      ::ftruncate(memory, 0);
-      ::lseek(memory, 0, SEEK_SET);
-      WriteAll(memory, WithFile(fileName, "cannot read: " + ExceptionText(e)));
-      ::_exit(3);
-    }
-    ::_exit(0);
-  }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
-  {
   }
   auto readText = [memory]() {
     std::string text;

@@ -37,6 +37,8 @@
 #include "vtkSmartPointer.h" // For Read
 
 #include <string> // For file names and messages
+#include <utility> // For ReadWithReader
+#include <vector>  // For ReadWithReader
 
 class vtkAlgorithm;
 class vtkCellArray;
@@ -176,8 +178,10 @@ protected:
   vtkPointCloudIO() = default;
 
   // Read() once the file is known to exist: with the reader of the extension, in this process.
+  // `leaveOut`: arrays a VTK XML reader does not read, each a name and whether it is cell data.
   static vtkSmartPointer<vtkPointSet> ReadWithReader(const std::string& fileName,
-    const std::string& extension, std::string& error, vtkCommand* observer);
+    const std::string& extension, std::string& error, vtkCommand* observer,
+    const std::vector<std::pair<std::string, bool>>& leaveOut = {});
   // ReadWithReader() in a child process, under the limits of SetReaderTimeLimit().
   static vtkSmartPointer<vtkPointSet> ReadIsolated(const std::string& fileName,
     const std::string& extension, double fileSize, std::string& error, vtkCommand* observer);
