@@ -12,6 +12,7 @@
 #include <vtksys/FStream.hxx>
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -36,6 +37,53 @@ inline std::string Printable(std::string_view text)
 inline std::string Quote(std::string_view text)
 {
   return "'" + Printable(text) + "'";
+}
+
+// Whether a decimal number that std::from_chars finds out of range is below 1 in magnitude (an
+// underflow: it rounds to a zero or a subnormal of the type) rather than beyond the type's
+// largest value (an overflow), told from its digits and its exponent of any size, whatever the
+// locale: "1e-5000" and "0.000...1" with 400 zeros underflow, "1e400" overflows.
+inline bool Underflows(std::string_view number)
+{
+  size_t i = 0;
+  const size_t n = number.size();
+  auto digit = [&number](size_t at) { return number[at] >= '0' && number[at] <= '9'; };
+  if (i < n && (number[i] == '+' || number[i] == '-'))
+  {
+    ++i;
+  }
+  // The number lies in [10^(order - 1), 10^order) times 10 to its exponent.
+  long long order = 0;
+  bool nonzero = false;
+  for (; i < n && digit(i); ++i)
+  {
+    nonzero = nonzero || number[i] != '0';
+    order += nonzero ? 1 : 0;
+  }
+  if (i < n && number[i] == '.')
+  {
+    for (++i; i < n && digit(i); ++i)
+    {
+      if (!nonzero && number[i] == '0')
+      {
+        --order;
+      }
+      nonzero = nonzero || number[i] != '0';
+    }
+  }
+  long long exponent = 0;
+  if (i < n && (number[i] == 'e' || number[i] == 'E'))
+  {
+    ++i;
+    const bool negative = i < n && number[i] == '-';
+    i += (i < n && (number[i] == '-' || number[i] == '+')) ? 1 : 0;
+    for (; i < n && digit(i); ++i)
+    {
+      exponent = std::min(exponent * 10 + (number[i] - '0'), 1000000000000000LL);
+    }
+    exponent = negative ? -exponent : exponent;
+  }
+  return !nonzero || order + exponent <= 0;
 }
 
 inline bool HostIsBigEndian()

@@ -107,15 +107,18 @@ Parse ParseNumber(std::string_view token, T& value)
     auto r = std::from_chars(first, last, value);
     if (r.ec == std::errc::result_out_of_range && r.ptr == last)
     {
-      // Underflow is a value too close to 0 for T: keep its rounding; overflow is an error.
+      // Underflow is a value too close to 0 for T: keep its rounding (a signed zero beyond long
+      // double's range too); overflow is an error.
+      if (!featurepoints::Underflows(std::string_view(first, static_cast<size_t>(last - first))))
+      {
+        return Parse::OutOfRange;
+      }
       long double wide;
       auto w = std::from_chars(first, last, wide);
-      if (w.ec == std::errc() && w.ptr == last && std::fabs(wide) < 1.0L)
-      {
-        value = static_cast<T>(wide);
-        return Parse::Ok;
-      }
-      return Parse::OutOfRange;
+      value = w.ec == std::errc() && w.ptr == last ? static_cast<T>(wide)
+        : *first == '-'                            ? -T(0)
+                                                   : T(0);
+      return Parse::Ok;
     }
     return (r.ec == std::errc() && r.ptr == last) ? Parse::Ok : Parse::NotANumber;
   }

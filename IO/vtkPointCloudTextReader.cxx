@@ -7,6 +7,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointCloudFiles.h"
 #include "vtkPointCloudIO.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -89,12 +90,14 @@ bool ParseNumber(std::string_view field, double& value, bool* outOfRange = nullp
   }
   if (result.ec == std::errc::result_out_of_range)
   {
-    // Underflow (a negative exponent) rounds to a signed zero; overflow is no number. Told apart
-    // by the exponent's sign, not by strtod, which reads the current locale's decimal point.
-    const size_t e = field.find_first_of("eE");
-    if (e != std::string_view::npos && e + 1 < field.size() && field[e + 1] == '-')
+    // Underflow (below 1 in magnitude: "1e-400", "0.000...1") keeps its rounding, a subnormal or
+    // a signed zero, as the PLY and PCD readers read it; overflow is no number. Told apart by the
+    // digits and the exponent, not by strtod, which reads the current locale's decimal point.
+    if (featurepoints::Underflows(field))
     {
-      value = field.front() == '-' ? -0.0 : 0.0;
+      long double wide = 0.0L;
+      const auto w = std::from_chars(field.data(), field.data() + field.size(), wide);
+      value = w.ec == std::errc() ? static_cast<double>(wide) : field.front() == '-' ? -0.0 : 0.0;
       return true;
     }
     if (outOfRange)

@@ -230,6 +230,29 @@ void KnownBinary()
     "cut binary: %s", bad.Message.c_str());
 }
 
+// Values below the smallest of their type keep their rounding (a zero of their sign), whatever
+// their exponent or digits, as the text and PLY readers read them: "1e-5000" (beyond long double
+// too) was refused as out of range.
+void Underflow()
+{
+  const std::string path = PathOf("underflow.pcd");
+  Spit(path,
+    "VERSION 0.7\nFIELDS x y z s\nSIZE 8 8 8 4\nTYPE F F F F\nCOUNT 1 1 1 1\nWIDTH 2\n"
+    "HEIGHT 1\nPOINTS 2\nDATA ascii\n1e-400 -1e-5000 0." +
+      std::string(400, '0') + "1 1e-50\n1 2 3 -1e-5000\n");
+  ReadResult r = Read(path);
+  auto* s = vtkFloatArray::SafeDownCast(r.Cloud->GetPointData()->GetArray("s"));
+  double x[3] = { 1, 1, 1 };
+  if (r.Cloud->GetNumberOfPoints() == 2)
+  {
+    r.Cloud->GetPoint(0, x);
+  }
+  FEATUREPOINTS_CHECK(r.Errors.empty() && s && s->GetNumberOfTuples() == 2 && x[0] == 0.0 &&
+      x[1] == 0.0 && std::signbit(x[1]) && x[2] == 0.0 && s->GetValue(0) == 0.0f &&
+      s->GetValue(1) == 0.0f && std::signbit(s->GetValue(1)),
+    "underflow: %s; (%g %g %g)", r.Message.c_str(), x[0], x[1], x[2]);
+}
+
 // binary_compressed with LZF bytes written by hand. The fields one after the other: x0 x1 y0 y1
 // z0 z1 (24 bytes, z1 == z0); the LZF stream is a literal run of 20 bytes (control byte 19) and a
 // back reference of 4 bytes at distance 4 (control byte (4 - 2) << 5, offset byte 4 - 1).
@@ -657,6 +680,7 @@ int TestPointCloudPCD(int argc, char* argv[])
   KnownAscii();
   KnownBinary();
   KnownCompressed();
+  Underflow();
   Organized();
   RoundTrips();
   Malformed();

@@ -550,6 +550,34 @@ void ExpectError(const std::string& what, const std::string& name, const std::st
   std::printf("%-34s %s\n", (what + ":").c_str(), r.Message.substr(Folder.size() + 1).c_str());
 }
 
+// Values below the smallest of their type keep their rounding (a zero of their sign), whatever
+// their exponent or digits, as the text and PCD readers read them; beyond the largest, an error.
+// "1e-5000" (beyond long double too) was refused as out of range.
+void TestUnderflow()
+{
+  const std::string path = PathOf("underflow.ply");
+  const std::string zeros = "0." + std::string(400, '0') + "1";
+  fptest::Spit(path,
+    "ply\nformat ascii 1.0\nelement vertex 2\nproperty double x\nproperty double y\n"
+    "property double z\nproperty float s\nend_header\n"
+    "1e-400 -1e-5000 " + zeros + " 1e-50\n1 2 3 -1e-5000\n");
+  const ReadResult r = Read(path);
+  auto* s = r.Data ? vtkFloatArray::SafeDownCast(r.Data->GetPointData()->GetArray("s")) : nullptr;
+  double x[3] = { 1, 1, 1 };
+  if (r.Data && r.Data->GetNumberOfPoints() == 2)
+  {
+    r.Data->GetPoint(0, x);
+  }
+  FEATUREPOINTS_CHECK(r.Code == 0 && r.Errors == 0 && s && s->GetNumberOfTuples() == 2 &&
+      Same(x[0], 0.0) && Same(x[1], -0.0) && Same(x[2], 0.0) && Same(s->GetValue(0), 0.0) &&
+      Same(s->GetValue(1), -0.0),
+    "underflow: %s; (%g %g %g)", r.Message.c_str(), x[0], x[1], x[2]);
+  ExpectError("overflow", "overflow.ply",
+    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+    "property float z\nend_header\n0 1e50 0\n",
+    "'1e50' is out of range for type float", 8);
+}
+
 void TestErrors()
 {
   {
@@ -822,6 +850,7 @@ int TestPointCloudPLY(int argc, char* argv[])
   Folder = argv[1];
   TestRoundTrips();
   TestHandWrittenAscii();
+  TestUnderflow();
   TestBigEndian();
   TestErrors();
   TestPieces();

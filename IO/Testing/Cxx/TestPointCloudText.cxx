@@ -148,12 +148,19 @@ int TestPointCloudText(int argc, char* argv[])
   ExpectError(folder, "cr.csv", "x,y,z\r1,2,3\r4,5,6\r",
     ":1: a carriage return inside the line: the file's lines end in CR alone");
   {
-    // Below the smallest double: read as strtod reads it (0), not refused.
-    Spit(folder + "/underflow.xyz", "1 2 3\n1e-400 2 3\n");
+    // Below the smallest double: read as strtod reads it (0, of its sign), not refused, whatever
+    // the exponent or the digits ("0.000...1" with 400 zeros was refused as beyond a double),
+    // as the PLY and PCD readers read it.
+    Spit(folder + "/underflow.xyz",
+      "1 2 3\n1e-400 -1e-5000 0." + std::string(400, '0') + "1\n");
     Read r(folder + "/underflow.xyz");
-    Check(r.Error.empty() && r.Output->GetNumberOfPoints() == 2 &&
-        r.Output->GetPoint(1)[0] == 0.0,
-      "underflow.xyz: 1e-400 read as 0: " + r.Error);
+    double x[3] = { 1, 1, 1 };
+    if (r.Error.empty() && r.Output->GetNumberOfPoints() == 2)
+    {
+      r.Output->GetPoint(1, x);
+    }
+    Check(r.Error.empty() && x[0] == 0.0 && x[1] == 0.0 && std::signbit(x[1]) && x[2] == 0.0,
+      "underflow.xyz: 1e-400, -1e-5000 and 0.000...1 read as 0, -0 and 0: " + r.Error);
   }
   ExpectError(folder, "twocolumns.xyz", "1 2\n", "a point needs 3 coordinates");
   ExpectError(folder, "noxyz.csv", "a,b,c\n1,2,3\n", "names no x, y and z");
