@@ -24,6 +24,7 @@
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataWriter.h"
+#include "vtkStringArray.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLUnstructuredGridReader.h"
@@ -2138,7 +2139,7 @@ std::string XMLAttributeText(const std::string& text)
 }
 
 // A String array of a piece's point or cell data in a VTK XML file (VTK's reader crashes on one
-// that holds fewer strings than its tuples and components call for): its name as the reader
+// that holds fewer or more strings than its tuples and components call for): its name as the reader
 // reads it, whether it is cell data, and what it holds where that can be told from its text (an
 // ASCII array: "2 strings for 3 points").
 struct XMLStringArray
@@ -3232,8 +3233,8 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fi
     ::close(memory);
     return ReadWithReader(fileName, extension, error, observer);
   }
-  // VTK's XML readers crash on a String array of point or cell data that holds fewer strings
-  // than its tuples call for: read again without the file's String arrays, and say so.
+  // VTK's XML readers crash on a String array of point or cell data that holds fewer or more
+  // strings than its tuples call for: read again without the file's String arrays, and say so.
   std::vector<XMLStringArray> leftOut;
   if (WIFSIGNALED(status) && WTERMSIG(status) != SIGALRM && WTERMSIG(status) != SIGXCPU &&
     (extension == "vtp" || extension == "vtu"))
@@ -3255,8 +3256,8 @@ vtkSmartPointer<vtkPointSet> vtkPointCloudIO::ReadIsolated(const std::string& fi
                                << (leftOut.size() == 1 ? "it" : "the file's String arrays")
                                << " (" << strsignal(WTERMSIG(status)) << "; "
                                << (array.Holds.empty()
-                                      ? "fewer strings than its tuples and components call for, "
-                                        "or corrupt data"
+                                      ? "other strings than its tuples and components call "
+                                        "for, or corrupt data"
                                       : "it holds " + array.Holds)
                                << "); the cloud is read without "
                                << (leftOut.size() == 1 ? "it" : "them"));
@@ -3497,9 +3498,49 @@ vtkSmartPointer<vtkPolyData> WithNames(
 }
 } // namespace
 
-vtkSmartPointer<vtkPolyData> vtkPointCloudIO::WithXMLNames(vtkPolyData* poly)
+vtkSmartPointer<vtkPolyData> vtkPointCloudIO::WithXMLNames(
+  vtkPolyData* poly, const std::string& fileName)
 {
-  return WithNames(poly, XMLName);
+  vtkSmartPointer<vtkPolyData> named = WithNames(poly, XMLName);
+  // A string holding a NUL byte: VTK's XML writer writes it as it is, and its reader, which ends
+  // each string at a NUL, then reads more strings than the array has values and crashes.
+  static const char* const kinds[3] = { "point", "cell", "field" };
+  vtkSmartPointer<vtkPolyData> copy;
+  for (int f = 0; f < 3; ++f)
+  {
+    vtkFieldData* fd = f == 0 ? named->GetPointData()
+      : f == 1                ? static_cast<vtkFieldData*>(named->GetCellData())
+                              : named->GetFieldData();
+    for (int i = 0; i < fd->GetNumberOfArrays(); ++i)
+    {
+      auto* strings = vtkStringArray::SafeDownCast(fd->GetAbstractArray(i));
+      vtkIdType at = -1;
+      for (vtkIdType v = 0; strings && at < 0 && v < strings->GetNumberOfValues(); ++v)
+      {
+        at = strings->GetValue(v).find('\0') != std::string::npos ? v : -1;
+      }
+      if (at < 0)
+      {
+        continue;
+      }
+      if (!copy)
+      {
+        copy = vtkSmartPointer<vtkPolyData>::New();
+        copy->ShallowCopy(named);
+      }
+      const std::string name = strings->GetName() ? strings->GetName() : "";
+      vtkGenericWarningMacro(<< (fileName.empty() ? std::string() : fileName + ": ") << kinds[f]
+                             << " array " << QuotedWord(name)
+                             << " (type String) left out: its value " << at
+                             << " (counting from 0) holds a NUL byte, which a VTK XML file "
+                                "cannot hold (VTK's reader crashes on such a file)");
+      vtkFieldData* target = f == 0 ? copy->GetPointData()
+        : f == 1                    ? static_cast<vtkFieldData*>(copy->GetCellData())
+                                    : copy->GetFieldData();
+      target->RemoveArray(name.c_str());
+    }
+  }
+  return copy ? copy : named;
 }
 
 namespace
@@ -3575,7 +3616,7 @@ bool vtkPointCloudIO::Write(vtkPointSet* data, const std::string& fileName, std:
   if (extension == "vtp")
   {
     auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    w->SetInputData(WithXMLNames(AsPolyData(data)));
+    w->SetInputData(WithXMLNames(AsPolyData(data), fileName));
     w->SetFileName(temporary.c_str());
     // Raw appended data compressed with LZ4: on a 1,000,000-point result with its arrays, 0.07 s
     // and 45 MB, where VTK's default (base64, zlib) takes 2.6 s and 48 MB. VTK 8.1 and later,

@@ -149,10 +149,13 @@ public:
    * back as they were), an empty name as "unnamed" (then "unnamed_2", ... where taken), control
    * characters as '_', bytes that are not UTF-8 as Latin-1 characters (XML must be UTF-8), and
    * names cut to 240 bytes (VTK's readers keep at most 255; .vtk outputs are cut alike). `poly` itself when every name already is; else a shallow copy whose
-   * renamed arrays share the originals' values (the caller's arrays keep their names). Write()
-   * applies it to .vtp outputs; C++ only.
+   * renamed arrays share the originals' values (the caller's arrays keep their names). String
+   * arrays with a value that holds a NUL byte are left out, with a warning that names them (and
+   * `fileName`, the output, when given): VTK's XML reader crashes on them. Write() applies it to
+   * .vtp outputs; C++ only.
    */
-  VTK_WRAPEXCLUDE static vtkSmartPointer<vtkPolyData> WithXMLNames(vtkPolyData* poly);
+  VTK_WRAPEXCLUDE static vtkSmartPointer<vtkPolyData> WithXMLNames(
+    vtkPolyData* poly, const std::string& fileName = std::string());
 
   ///@{
   /**

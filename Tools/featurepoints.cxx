@@ -1663,7 +1663,7 @@ private:
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff(); // as vtkPointCloudIO writes a .vtp
     writer->SetCompressorTypeToLZ4();
-    writer->SetInputData(vtkPointCloudIO::WithXMLNames(written));
+    writer->SetInputData(vtkPointCloudIO::WithXMLNames(written, s.Output));
     vtkNew<ErrorFlag> writeError;
     writer->AddObserver(vtkCommand::ErrorEvent, writeError);
     const int ok = writer->Write() == 1 && writeError->Message.empty() ? 1 : 0;
