@@ -571,6 +571,27 @@ bool CheckLegacyPoints(const std::string& fileName, double fileSize, std::string
       word.push_back(w);
     }
     const std::string keyword = word.empty() ? std::string() : UpperCase(word[0]);
+    const size_t version = line.find("DataFile Version");
+    if (number == 1 && version != std::string::npos)
+    {
+      // VTK 9.1's reader reads versions up to 5.1; it refuses a newer one ("Reading file
+      // version: 6.0 with older reader version 5.1") or crashes (7 and beyond).
+      std::istringstream text(line.substr(version + 16));
+      std::string declared;
+      text >> declared;
+      long long major = 0, minor = 0;
+      const size_t dot = declared.find('.');
+      const bool parsed = WholeNumber(declared.substr(0, dot), major) &&
+        (dot == std::string::npos || WholeNumber(declared.substr(dot + 1), minor));
+      if (parsed && (major > 5 || (major == 5 && minor > 1)))
+      {
+        error = fileName + ":1: the header declares file version " +
+          vtkPointCloudIO::MessageText(declared.substr(0, 40).c_str()) +
+          ", newer than VTK's legacy reader reads (at most 5.1): a corrupt header, or a file "
+          "written by a newer VTK";
+        return false;
+      }
+    }
     if (number == 3)
     {
       binary = keyword == "BINARY";
@@ -732,12 +753,13 @@ std::string LegacyPointsProblem(const std::string& fileName)
   long number = 0;
   bool dataset = false;
   long long count = -1;
+  std::string pointsType; // the POINTS line's type
   while (count < 0 && std::getline(file, line))
   {
     ++number;
     std::istringstream words(line);
     std::string keyword, declared;
-    words >> keyword >> declared;
+    words >> keyword >> declared >> pointsType;
     keyword = UpperCase(keyword);
     if (number == 3 && keyword != "ASCII")
     {
@@ -767,6 +789,26 @@ std::string LegacyPointsProblem(const std::string& fileName)
     const auto parsed = std::from_chars(word.data() + (word[0] == '+' ? 1 : 0), end, value);
     return parsed.ec == std::errc() && parsed.ptr == end;
   };
+  std::string lowerType = pointsType;
+  std::transform(lowerType.begin(), lowerType.end(), lowerType.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const bool integerPoints = !lowerType.empty() && lowerType.compare(0, 5, "float") != 0 &&
+    lowerType.compare(0, 6, "double") != 0;
+  // VTK's reader matches a type by its first letters.
+  static const char* const known[] = { "bit", "unsigned_char", "char", "unsigned_short", "short",
+    "unsigned_int", "int", "unsigned_long", "long", "float", "double", "vtkidtype",
+    "vtktypeint64", "vtktypeuint64" };
+  if (count >= 0 && std::none_of(std::begin(known), std::end(known), [&lowerType](const char* t) {
+        return lowerType.compare(0, std::strlen(t), t) == 0;
+      }))
+  {
+    // VTK's reader says "Unsupported data type: bogus".
+    return fileName + ":" + std::to_string(number) + ": the POINTS line names the type '" +
+      vtkPointCloudIO::MessageText(pointsType.substr(0, 20).c_str()) +
+      "', no numeric type of the legacy format (bit, unsigned_char, char, unsigned_short, short, "
+      "unsigned_int, int, unsigned_long, long, float, double, vtkIdType, vtktypeint64, "
+      "vtktypeuint64)";
+  }
   const std::string tooMany = ": the POINTS block holds more than " + std::to_string(count) +
     " x 3 values (a wrong POINTS count)";
   while (read < values && std::getline(file, line))
@@ -784,6 +826,15 @@ std::string LegacyPointsProblem(const std::string& fileName)
         return fileName + ":" + std::to_string(number) + ": coordinate " +
           std::to_string(read % 3 + 1) + " of point " + std::to_string(read / 3 + 1) + " ('" +
           (word.size() > 40 ? word.substr(0, 40) + "..." : word) + "') is not a finite number";
+      }
+      if (integerPoints && value != std::floor(value))
+      {
+        // VTK's reader says only "Error reading ascii data".
+        return fileName + ":" + std::to_string(number) + ": coordinate " +
+          std::to_string(read % 3 + 1) + " of point " + std::to_string(read / 3 + 1) + " ('" +
+          (word.size() > 40 ? word.substr(0, 40) + "..." : word) +
+          "') is not a whole number, as the POINTS line's type '" +
+          vtkPointCloudIO::MessageText(pointsType.substr(0, 20).c_str()) + "' needs";
       }
     }
     if (read == values && words >> extra && isNumber(extra))
@@ -1544,27 +1595,50 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     const double product = static_cast<double>(a) * static_cast<double>(b);
     return product > 4e18 ? 4000000000000000000LL : a * b;
   };
+  // A type's bytes as VTK's reader matches it: lower-cased, by its first letters, in its order;
+  // -2 for strings (their sizes are not declared), -1 for no type of the format.
   auto bytesOf = [mul](const std::string& type, long long values) -> long long {
-    static const std::map<std::string, int> sizes = { { "unsigned_char", 1 }, { "char", 1 },
-      { "unsigned_short", 2 }, { "short", 2 }, { "unsigned_int", 4 }, { "int", 4 },
-      { "unsigned_long", 8 }, { "long", 8 }, { "float", 4 }, { "double", 8 },
-      { "vtkIdType", 4 }, { "vtktypeint64", 8 }, { "vtktypeuint64", 8 } };
-    if (type == "bit")
+    static const std::pair<const char*, int> sizes[] = { { "bit", 0 }, { "unsigned_char", 1 },
+      { "char", 1 }, { "unsigned_short", 2 }, { "short", 2 }, { "unsigned_int", 4 }, { "int", 4 },
+      { "unsigned_long", 8 }, { "long", 8 }, { "float", 4 }, { "double", 8 }, { "vtkidtype", 4 },
+      { "vtktypeint64", 8 }, { "vtktypeuint64", 8 }, { "string", -2 }, { "utf8_string", -2 },
+      { "variant", -2 } };
+    std::string lower = type;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+      [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const auto& size : sizes)
     {
-      return (values + 7) / 8;
+      if (lower.compare(0, std::strlen(size.first), size.first) == 0)
+      {
+        return size.second == 0 ? (values + 7) / 8
+          : size.second < 0     ? -2
+                                : mul(size.second, values);
+      }
     }
-    const auto found = sizes.find(type);
-    return found == sizes.end() ? -1 : mul(found->second, values);
+    return -1;
   };
   // Skips a block of `bytes` after the line just read; the problem when the file ends inside it.
   std::string problem;
   bool binaryBefore = false;
+  std::string lastBlock; // the line of the block just skipped, and its size
   auto block = [&](long long bytes, const std::string& what) {
     const long long at = static_cast<long long>(file.tellg());
+    if (bytes == -1)
+    {
+      // VTK's reader says "Unsupported data type: ..." without the line.
+      problem = fileName + (binaryBefore ? std::string() : ":" + std::to_string(number)) + ": " +
+        what + (binaryBefore ? " at byte " + std::to_string(lineStart) : std::string()) +
+        " names no type of the legacy format (bit, unsigned_char, char, unsigned_short, short, "
+        "unsigned_int, int, unsigned_long, long, float, double, vtkIdType, vtktypeint64, "
+        "vtktypeuint64, string)";
+      return false;
+    }
     if (bytes < 0 || at < 0)
     {
       return false;
     }
+    lastBlock = what + " at byte " + std::to_string(lineStart) + " and its " +
+      std::to_string(bytes) + " bytes";
     if (at + bytes > size)
     {
       // Past the first binary block, line numbers mean nothing to an editor: the byte.
@@ -1626,6 +1700,8 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     const std::string keyword = UpperCase(words[0]);
     long long n = 0, m = 0;
     const std::string quoted = quotedLine();
+    const std::string previousBlock = lastBlock; // the block before this line, if any
+    lastBlock.clear();
     // A problem of this line as a cells line (past binary data, its byte instead of its number).
     auto cellsLine = [&](const std::string& what) {
       return fileName + (binaryBefore ? std::string() : ":" + std::to_string(number)) +
@@ -1852,11 +1928,26 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     }
     else if (keyword == "FIELD" && words.size() >= 3 && WholeNumber(words[2], n))
     {
+      const std::string field = located("the FIELD line " + quoted);
+      const std::string fieldLine = "the FIELD line " + quoted +
+        (binaryBefore ? " at byte " + std::to_string(lineStart)
+                      : " (line " + std::to_string(number) + ")");
       for (long long a = 0; a < n; ++a)
       {
         if (!next(words))
         {
-          return {};
+          // VTK's reader fails without a word.
+          return field + " declares " + std::to_string(n) + " arrays; the file ends after " +
+            std::to_string(a) + " of them";
+        }
+        static const std::set<std::string> sections = { "POINT_DATA", "CELL_DATA", "FIELD",
+          "POINTS", "VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS", "CELLS", "CELL_TYPES" };
+        if (words.size() < 4 && sections.count(UpperCase(words[0])))
+        {
+          return fileName + ": " + quotedLine() + " at byte " + std::to_string(lineStart) +
+            " where array " + std::to_string(a) + " (counting from 0) of the " +
+            std::to_string(n) + " that " + fieldLine +
+            " declares should be: the field holds fewer arrays than declared";
         }
         if (words[0] == "METADATA")
         {
@@ -1886,6 +1977,22 @@ std::string LegacyBinaryProblem(const std::string& fileName)
     else if (keyword == "METADATA")
     {
       skipMetadata();
+    }
+    else if (!previousBlock.empty() && !std::all_of(words[0].begin(), words[0].end(), [](char c) {
+               return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+             }))
+    {
+      // Binary data where a keyword should follow a block: the block is not as long as its line
+      // declares (VTK's reader says "Unrecognized keyword: " and the bytes).
+      std::string shown = words[0].substr(0, 20);
+      for (char& c : shown)
+      {
+        c = (c >= 32 && c < 127) ? c : '?';
+      }
+      return fileName + ": byte " + std::to_string(lineStart) + ", after " + previousBlock +
+        ", holds no keyword ('" + shown + (words[0].size() > 20 ? "..." : "") +
+        "'): the block's line declares another count or type than its data have, or the file is "
+        "corrupt there";
     }
     else
     {

@@ -1261,6 +1261,41 @@ void LegacyFiles()
       std::to_string(cells51.size()) + " is 3 (at byte " + std::to_string(offsetsLine.size() + 24) +
       "), the last, but the cells line 'VERTICES 4 2' at byte " +
       std::to_string(cells51.size() - 13) + " declares 2 connectivity values");
+  // Found by fuzzing. A version beyond 5.1 (VTK's reader crashed on 7; it refuses 6.0), a type
+  // no type of the format ("Unsupported data type: bogus"), binary data where a keyword should
+  // follow a block ("Unrecognized keyword: " and the bytes), a FIELD line declaring more arrays
+  // than follow (no word), ASCII points of an integer type that are not whole ("Error reading
+  // ascii data"): each is named with its line or byte.
+  refused("legacy VTK of version 7", "version7.vtk",
+    "# vtk DataFile Version 7.0\nt\nASCII\nDATASET POLYDATA\n" + three,
+    "version7.vtk:1: the header declares file version 7.0, newer than VTK's legacy reader reads "
+    "(at most 5.1)");
+  refused("legacy VTK with a bogus type", "bogus-type.vtk",
+    cellsBinary + "POINT_DATA 3\nNORMALS n bogus\n" + std::string(36, '\0') + "\n",
+    "bogus-type.vtk: the NORMALS line 'NORMALS n bogus' at byte " +
+      std::to_string(cellsBinary.size() + 13) + " names no type of the legacy format");
+  const std::string onePoint = "# vtk DataFile Version 4.2\nt\nBINARY\nDATASET POLYDATA\n"
+                               "POINTS 1 float\n";
+  refused("binary legacy VTK whose POINTS count is too small", "points-small.vtk",
+    onePoint + bigEndian({ 0x3F800000, 0x3F800000, 0x3F800000, 0x3F800000, 0x3F800000,
+                 0x3F800000, 0x3F800000, 0x3F800000, 0x3F800000 }) + "\n",
+    "points-small.vtk: byte " + std::to_string(onePoint.size() + 12) +
+      ", after the POINTS line 'POINTS 1 float' at byte " + std::to_string(onePoint.size() - 15) +
+      " and its 12 bytes, holds no keyword ('????????????????????...'): the block's line declares "
+      "another count or type than its data have");
+  const std::string fieldCount = cellsBinary + "POINT_DATA 3\nFIELD FieldData 2\n";
+  refused("binary legacy VTK with fewer field arrays than declared", "field-arrays.vtk",
+    fieldCount + "f 1 3 float\n" + std::string(12, '\0') + "\n",
+    "field-arrays.vtk: the FIELD line 'FIELD FieldData 2' at byte " +
+      std::to_string(fieldCount.size() - 18) + " declares 2 arrays; the file ends after 1 of them");
+  refused("legacy VTK with char points that are not whole", "char-points.vtk",
+    header + "POINTS 3 char\n0 0 0.5 1 0 0 0 1 0\n",
+    "char-points.vtk:6: coordinate 3 of point 1 ('0.5') is not a whole number, as the POINTS "
+    "line's type 'char' needs");
+  refused("legacy VTK with points of no type", "bogus-points.vtk",
+    header + "POINTS 3 bogus\n0 0 0 1 0 0 0 1 0\n",
+    "bogus-points.vtk:5: the POINTS line names the type 'bogus', no numeric type of the legacy "
+    "format");
   // ASCII, a POINT_DATA line of other points than the POINTS line's (VTK's reader read on,
   // misaligned: "Unsupported point attribute type").
   refused("legacy VTK whose POINT_DATA count is not its points'", "point-data-count.vtk",
