@@ -89,8 +89,13 @@
  * 3. Crease line of the fit: the intersection of the two planes (when they are not parallel).
  * 4. Vote. A point j of P_i's neighbourhood (P_i included) votes for P_i when its two planes
  *    fit better than one (gain above 1), meet at MinimumAngle or more, and its crease line
- *    passes within BandWidth d of P_i (on a cloud sampled in scan lines, within BandWidth times
- *    half the gap to the next row, where that is larger: a crease between two rows). The score
+ *    passes within sqrt((BandWidth d)^2 + (2 sigma)^2) of P_i: the band widened by the noise,
+ *    which moves a point across the line as well (within 2 sigma in 86 % of draws under
+ *    isotropic noise, 95 % under noise along the normals; on the generated parts at sigma =
+ *    0.5 s, F1 median 0.977 -> 0.988, at 1.5 s the box 0.825 -> 0.888; on a clean cloud sigma
+ *    is at its floor and the band is BandWidth d). On a cloud sampled in scan lines, within
+ *    BandWidth times half the gap to the next row, where that is larger: a crease between two
+ *    rows. The score
  *    `CreaseVotes` is the fraction of the N points that vote, counting only the points whose
  *    fit reaches P_i: a member fitted at a smaller scale (step 2c) whose fitted points all lie
  *    nearer to it than P_i does says nothing about P_i, and neither votes nor counts.
@@ -311,8 +316,9 @@ public:
   /**
    * How far from a fitted crease line (or from a border's outermost row) a point still counts as
    * on it, in mean spacings d. Default 2: the project's feature points are those within 2 s of a
-   * feature curve. Labels that mark only the row of points nearest the edge (PCEDNet's)
-   * call for ThinFeatures.
+   * feature curve. Around a crease line the band is widened by the cloud's noise, in quadrature:
+   * sqrt((BandWidth d)^2 + (2 sigma)^2) (step 4). Labels that mark only the row of points nearest
+   * the edge (PCEDNet's) call for ThinFeatures.
    */
   vtkSetClampMacro(BandWidth, double, 0.01, 1000.0);
   vtkGetMacro(BandWidth, double);

@@ -328,7 +328,8 @@ const std::vector<FilterOption>& FilterOptions()
     { "band-width", "D", { "crease" }, 0.01, 1000.0, false, {},
       [](vtkFeaturePointDetector* f, double v) { Crease(f)->SetBandWidth(v); },
       [](vtkFeaturePointDetector* f) { return Crease(f)->GetBandWidth(); },
-      "how far from a fitted crease line a point still counts as on it, in mean spacings" },
+      "how far from a fitted crease line a point still counts as on it, in mean spacings "
+      "(widened by twice the noise, in quadrature)" },
     { "min-angle", "DEGREES", { "crease" }, 0.0, 90.0, false, {},
       [](vtkFeaturePointDetector* f, double v) { Crease(f)->SetMinimumAngle(v); },
       [](vtkFeaturePointDetector* f) { return Crease(f)->GetMinimumAngle(); },
