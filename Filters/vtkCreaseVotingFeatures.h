@@ -114,7 +114,11 @@
  * so no point gathers a majority. On noise the lines fall anywhere. Everything is measured in
  * units of d and sigma, from the cloud itself: the result does not change when the cloud is
  * scaled or moved, and the neighbourhoods are counts, so denser and sparser regions are treated
- * alike.
+ * alike. The fits keep squared lengths in float: a cloud whose extent lies beyond 2^-32 .. 2^32
+ * units runs scaled by a power of two to an extent near 1, which is exact, and its lengths are
+ * scaled back (CreaseOffset, then in double, the field MeanSpacing and GetNoiseSigma()): the
+ * same mask at any scale from about 10^-289 to 10^298 (without it, 251 of 20,000 points changed
+ * at 2^140 and none was found at 2^990). Distributed runs keep their pieces' frame.
  *
  * 7. Borders (Borders): a point whose 50 nearest on its sheet leave an empty sector above 120
  *    degrees in their tangent plane is on a border (sets of fewer than 25 connected such points,
@@ -255,7 +259,8 @@ public:
    * the true curves where the points lie 1.2-1.4 from them). Not on parallel creases 3 spacings
    * apart: the lines of both vote and the median falls between them (5 apart: 0.30 spacings).
    * vtkFeatureCurveExtraction places its crease vertices with it where its input carries it
-   * (`featurepoints --lines` turns it on). Default off (12 bytes a point).
+   * (`featurepoints --lines` turns it on). Default off (12 bytes a point; double, 24, for a cloud
+   * run scaled, see the class description).
    */
   vtkSetMacro(CreaseOffsets, bool);
   vtkGetMacro(CreaseOffsets, bool);

@@ -719,6 +719,39 @@ void vtkFeaturePointDetector::GatherAll(std::vector<long long>& values) const
   this->GatherValues(values);
 }
 
+int vtkFeaturePointDetector::ScaledFrameExponent(vtkPointSet* cloud, int limit)
+{
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  double bounds[6];
+  cloud->GetPoints()->GetBounds(bounds);
+  const double extent =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  if (!(extent > 0.0) || (extent >= std::ldexp(1.0, -limit) && extent <= std::ldexp(1.0, limit)))
+  {
+    return 0;
+  }
+  const vtkIdType stride = std::max<vtkIdType>(1, n / 100000);
+  double robust = 0.0;
+  std::vector<double> sample;
+  for (int a = 0; a < 3; ++a)
+  {
+    sample.clear();
+    for (vtkIdType i = 0; i < n; i += stride)
+    {
+      sample.push_back(cloud->GetPoint(i)[a]);
+    }
+    const size_t lo = sample.size() / 4, hi = sample.size() - 1 - sample.size() / 4;
+    std::nth_element(sample.begin(), sample.begin() + lo, sample.end());
+    const double qlo = sample[lo];
+    std::nth_element(sample.begin(), sample.begin() + hi, sample.end());
+    robust = std::max(robust, sample[hi] - qlo);
+  }
+  // An overflowing span (coordinates near +-1.8e308) counts as the largest double.
+  const double span = robust > 0.0 ? std::min(robust, VTK_DOUBLE_MAX) : std::min(extent, VTK_DOUBLE_MAX);
+  const int power = std::ilogb(span);
+  return power >= -limit && power <= limit ? 0 : -power; // a few far outliers alone: left as they are
+}
+
 bool vtkFeaturePointDetector::CheckSpacing(double d, vtkPointCloudNeighborhoods* neighborhoods)
 {
   if (!(d > 0.0))

@@ -190,6 +190,15 @@ public:
   ///@}
 
   /**
+   * The power of two by which to scale a cloud so that squares and products of its coordinate
+   * differences, in double and in float, neither overflow nor underflow; 0 where its extent lies
+   * within 2^-limit .. 2^limit (its results do not change). Others are scaled to a robust extent
+   * near 1: the central half of the points on each axis, so that far points, even 1 % of them,
+   * do not shrink the rest into underflow. A power of two scales every coordinate exactly.
+   */
+  static int ScaledFrameExponent(vtkPointSet* cloud, int limit = 64);
+
+  /**
    * Distributed runs: the halo width the last run needed; larger than HaloWidth when the run
    * stopped for want of it (its output is then all zeros). VTK_DOUBLE_MAX: the whole cloud.
    */

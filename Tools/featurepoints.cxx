@@ -1250,45 +1250,6 @@ void WarnReplacedArrays(vtkPointSet* input, vtkPolyData* result)
   }
 }
 
-// The power of two by which to scale the cloud so that squares and products of its coordinate
-// differences neither overflow nor underflow (0: leave it as it is). Clouds whose extent lies
-// within 2^-64 .. 2^64 are left alone (their results do not change); others are scaled to a
-// robust extent near 1 (the central half of the points on each axis, so that far points, even
-// 1 % of them, do not shrink the rest into underflow). A power of two scales every coordinate
-// exactly.
-int ScaledFrameExponent(vtkPointSet* cloud)
-{
-  const vtkIdType n = cloud->GetNumberOfPoints();
-  double bounds[6];
-  cloud->GetPoints()->GetBounds(bounds);
-  const double extent =
-    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-  if (!(extent > 0.0) || (extent >= std::ldexp(1.0, -64) && extent <= std::ldexp(1.0, 64)))
-  {
-    return 0;
-  }
-  const vtkIdType stride = std::max<vtkIdType>(1, n / 100000);
-  double robust = 0.0;
-  std::vector<double> sample;
-  for (int a = 0; a < 3; ++a)
-  {
-    sample.clear();
-    for (vtkIdType i = 0; i < n; i += stride)
-    {
-      sample.push_back(cloud->GetPoint(i)[a]);
-    }
-    const size_t lo = sample.size() / 4, hi = sample.size() - 1 - sample.size() / 4;
-    std::nth_element(sample.begin(), sample.begin() + lo, sample.end());
-    const double qlo = sample[lo];
-    std::nth_element(sample.begin(), sample.begin() + hi, sample.end());
-    robust = std::max(robust, sample[hi] - qlo);
-  }
-  // An overflowing span (coordinates near +-1.8e308) counts as the largest double.
-  const double span = robust > 0.0 ? std::min(robust, VTK_DOUBLE_MAX) : std::min(extent, VTK_DOUBLE_MAX);
-  const int power = std::ilogb(span);
-  return power >= -64 && power <= 64 ? 0 : -power; // a few far outliers alone: left as they are
-}
-
 // The points of a cloud that fall out of range in its scaled frame: finite in the input, infinite
 // once scaled. A cloud that spans more than doubles can square (a part 1e-60 wide and a point at
 // 1e260) has no scale for both.
@@ -1960,7 +1921,7 @@ private:
     }
     this->Filter->SetOutputFeaturesOnly(false); // the picture needs every point; see WriteFiles
     // Read by pieces: the whole cloud's extent needs no scaled frame (see ReadPiece).
-    const int exponent = this->ByPieces ? 0 : ScaledFrameExponent(this->Cloud);
+    const int exponent = this->ByPieces ? 0 : vtkFeaturePointDetector::ScaledFrameExponent(this->Cloud);
     this->Exponent = exponent;
     if (exponent != 0)
     {

@@ -1,11 +1,15 @@
 // F is dimensionless: the same cloud scaled by 1000, or moved by 10^6 along each axis, gives the
 // same FeatureMask (double-precision coordinates); so does a cloud with denser features whose
-// points are also shuffled.
+// points are also shuffled. The default detector gives the same mask at scales far beyond
+// float's range (10^-290 to 10^300).
 #include "FeaturePointsTestRun.h"
 
+#include "vtkCreaseVotingFeatures.h"
+#include "vtkDataArray.h"
 #include "vtkPointData.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -106,5 +110,63 @@ int TestFeaturePointInvariance(int, char*[])
   FP_CHECK(CountSet(Mask(dense->GetOutput())) > 50, "denser cloud: only %ld feature points",
     CountSet(Mask(dense->GetOutput())));
   FP_CHECK(differ == 0, "denser cloud shuffled: %ld mask differences", differ);
+
+  // The default detector at scales where squared lengths leave float's range (2^70, 2^140, 2^990
+  // and their inverses, about 10^21 to 10^298 and 10^-289): exactly the same mask, offsets and
+  // figures, scaled with the cloud (it runs scaled by a power of two to an extent near 1).
+  auto crease = [](vtkPolyData* data) {
+    auto filter = vtkSmartPointer<vtkCreaseVotingFeatures>::New();
+    filter->CreaseOffsetsOn();
+    filter->SetInputData(data);
+    filter->Update();
+    return filter;
+  };
+  auto creaseReference = crease(cloud.Data);
+  vtkDataArray* referenceOffsets =
+    creaseReference->GetOutput()->GetPointData()->GetArray("CreaseOffset");
+  FP_CHECK(CountSet(Mask(creaseReference->GetOutput())) > 50, "crease: only %ld feature points",
+    CountSet(Mask(creaseReference->GetOutput())));
+  for (const int power : { 70, 140, 990, -70, -140, -960 })
+  {
+    const double scale = std::ldexp(1.0, power);
+    vtkNew<vtkPoints> scaled;
+    scaled->SetDataTypeToDouble();
+    scaled->SetNumberOfPoints(cloud.Data->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < scaled->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      cloud.Data->GetPoint(i, p);
+      scaled->SetPoint(i, p[0] * scale, p[1] * scale, p[2] * scale);
+    }
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(scaled);
+    auto result = crease(data);
+    vtkPolyData* out = result->GetOutput();
+    vtkDataArray* offsets = out->GetPointData()->GetArray("CreaseOffset");
+    long maskDiffer = 0, offsetDiffer = 0;
+    for (vtkIdType i = 0; i < scaled->GetNumberOfPoints(); ++i)
+    {
+      maskDiffer += Mask(out)->GetValue(i) != Mask(creaseReference->GetOutput())->GetValue(i);
+      for (int c = 0; c < 3; ++c)
+      {
+        const double expected = referenceOffsets->GetComponent(i, c);
+        const double got = std::ldexp(offsets->GetComponent(i, c), -power);
+        offsetDiffer += got != expected;
+      }
+    }
+    const double sigmaRatio =
+      std::ldexp(result->GetNoiseSigma(), -power) / creaseReference->GetNoiseSigma();
+    const double spacingRatio =
+      std::ldexp(result->GetMeanSpacing(), -power) / creaseReference->GetMeanSpacing();
+    std::printf("crease, scaled x2^%d: %ld feature points, %ld mask differences, %ld offsets off, "
+                "noise ratio %.9f, spacing ratio %.9f\n",
+      power, CountSet(Mask(out)), maskDiffer, offsetDiffer, sigmaRatio, spacingRatio);
+    FP_CHECK(maskDiffer == 0, "crease scaled x2^%d: %ld mask differences", power, maskDiffer);
+    FP_CHECK(offsetDiffer == 0, "crease scaled x2^%d: %ld offset components off", power,
+      offsetDiffer);
+    FP_CHECK(sigmaRatio == 1.0 && spacingRatio == 1.0,
+      "crease scaled x2^%d: noise ratio %g, spacing ratio %g", power, sigmaRatio, spacingRatio);
+    FP_CHECK(AllFinite(out), "crease scaled x2^%d: non-finite output", power);
+  }
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
