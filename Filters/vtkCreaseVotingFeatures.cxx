@@ -115,6 +115,12 @@ constexpr double SheetSeparation = 4.0;
 constexpr double NoiseTrimZ = 1.6448536;      // 0.95
 constexpr double NoiseTrimHalfZ = -0.0627068; // 0.475
 constexpr int NoiseTrimRounds = 100;
+// The noise figure across the surface (MeasureNoiseAcross): the search ball reaches the radius
+// of the point's nearest across the surface widened by this many standard deviations of a
+// height difference between two points (sqrt 2 sigma), so that it misses none of them; at most
+// NoiseSearchPasses searches, each from the figure of the one before.
+constexpr double NoiseHeightSpread = 3.0 * 1.4142135623730951;
+constexpr int NoiseSearchPasses = 3;
 // The nearest-plane fit stands for two surfaces crossing (four half-planes at the line) only where
 // each of its planes holds at least CrossingShare of the neighbourhood on either side of the line,
 // counting only points more than CrossingSigmas noise widths from the other plane: points that the
@@ -1576,6 +1582,23 @@ struct CreaseRun
   // from their quadric's residual per degree of freedom, on the point's side of a wall thinner
   // than them (NoiseResidual, NoiseVariance).
   void ComputeNormals(int kn, const double center[3], float* normal);
+  // Step 1a, again where the noise is large for the kn nearest: in space, the kn nearest of a
+  // point favour the neighbours near its own height, whose heights spread less than the noise,
+  // and their plane tilts into the noise (its normal is the direction where the draw happened
+  // to spread least); on a noisy plane the figure read 0.95 of the noise at sigma = 0.5 and
+  // 0.61 at 1.5 (in units of the 16 nearest's radius r / 2.26). Instead the noise is measured
+  // on the kn nearest across the surface (distances in the tangent plane) among the point's
+  // nearest in space, in the frame of these (a plane of more points), reaching the radius r of
+  // the kn nearest across widened by 3 standard deviations of a height difference (3 sqrt(2)
+  // sigma): (kn + 1) (1 + 18 sigma^2 / r^2) points, at most K. On the noisy plane that reads
+  // 0.99-1.01 of the noise from 0.25 to 2. It runs where the ball holds more than twice the kn
+  // nearest (sigma > r / 4.24), from the last figure until the ball stops growing; below, the
+  // figure reads at least about 0.95 of the noise and one more search of every row would cost
+  // about a tenth of the detector.
+  void MeasureNoiseAcross(vtkPointCloudNeighborhoods* neighborhoods, int kn);
+  // The median over the rows of the squared tangent-plane distance from the point to the
+  // farthest of its kn nearest (ComputeNormals(), then MeasureNoiseAcross()).
+  double NoiseReach2 = 0.0;
   // sigma^2 from the rows' residuals per degree of freedom (dof: a whole neighbourhood's), each
   // sigma^2 chi2(dof) / dof where only noise is in view, larger where a feature is. The median
   // holds while most neighbourhoods see no feature. On a part whose details lie a few spacings
@@ -1797,6 +1820,7 @@ void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
   std::vector<double> residual(static_cast<size_t>(this->Rows), 0.0);
   std::vector<double> raw(static_cast<size_t>(this->Rows), -1.0);
   std::vector<signed char> rowDof(static_cast<size_t>(this->Rows), 0);
+  std::vector<double> reach(static_cast<size_t>(this->Rows), -1.0);
   vtkSMPThreadLocal<std::vector<double>> normalScratch;
   vtkSMPThreadLocal<NoiseScratch> noiseScratch;
   vtkSMPTools::For(0, this->Rows, [&](vtkIdType begin, vtkIdType end) {
@@ -1822,10 +1846,106 @@ void CreaseRun::ComputeNormals(int kn, const double center[3], float* normal)
       int dof = 0;
       residual[r] = NoiseResidual(q.data(), count, nrm, lambda[0], s, raw[r], dof);
       rowDof[r] = static_cast<signed char>(std::min(dof, 127));
+      reach[r] = count > 0 ? 0.0 : -1.0;
+      for (int j = 0; j < count; ++j)
+      {
+        const double* y = q.data() + 3 * j;
+        const double h = y[0] * nrm[0] + y[1] * nrm[1] + y[2] * nrm[2];
+        reach[r] = std::max(reach[r], y[0] * y[0] + y[1] * y[1] + y[2] * y[2] - h * h);
+      }
     }
   });
   const double floor = NoiseFloor * NoiseFloor * this->D * this->D;
   this->Variance = std::max(this->NoiseVariance(residual, raw, rowDof, kn + 1 - 6), floor);
+  this->NoiseReach2 = this->RowQuantile(reach, 0.5);
+}
+
+void CreaseRun::MeasureNoiseAcross(vtkPointCloudNeighborhoods* neighborhoods, int kn)
+{
+  const double floor = NoiseFloor * NoiseFloor * this->D * this->D;
+  int used = kn;
+  for (int pass = 0; pass < NoiseSearchPasses && neighborhoods && kn > 0; ++pass)
+  {
+    const double ratio = NoiseHeightSpread * NoiseHeightSpread * this->Variance / this->NoiseReach2;
+    if (!(this->NoiseReach2 > 0.0) || !std::isfinite(ratio) || (pass == 0 && ratio <= 1.0))
+    {
+      return;
+    }
+    const int want = static_cast<int>(std::min<double>(
+      std::min<vtkIdType>(this->K, this->N - 1), std::ceil((kn + 1) * (1.0 + ratio)) - 1.0));
+    if (want <= used)
+    {
+      return;
+    }
+    used = want;
+    std::vector<double> residual(static_cast<size_t>(this->Rows), -1.0);
+    std::vector<double> raw(static_cast<size_t>(this->Rows), -1.0);
+    std::vector<double> reach(static_cast<size_t>(this->Rows), -1.0);
+    std::vector<signed char> rowDof(static_cast<size_t>(this->Rows), 0);
+    std::vector<int32_t> table;
+    vtkSMPThreadLocal<NoiseScratch> noiseScratch;
+    for (vtkIdType start = 0; start < this->Rows; start += BlockRows)
+    {
+      const std::vector<vtkIdType> block(this->Ids.begin() + start,
+        this->Ids.begin() + std::min<vtkIdType>(this->Rows, start + BlockRows));
+      if (!neighborhoods->FindNearestNeighbors(want, block, table))
+      {
+        return; // aborted: the figure in space stands
+      }
+      vtkSMPTools::For(0, static_cast<vtkIdType>(block.size()), [&](vtkIdType begin, vtkIdType end) {
+        NoiseScratch& s = noiseScratch.Local();
+        std::vector<double> q(3 * static_cast<size_t>(want)), across(3 * static_cast<size_t>(kn));
+        std::vector<std::pair<double, int>> order;
+        double x[3], lambda[3], nrm[3];
+        const double any[3] = { 0.0, 0.0, 0.0 }; // the residual does not read the normal's sign
+        for (vtkIdType b = begin; b < end; ++b)
+        {
+          const vtkIdType r = start + b;
+          const int32_t* row = table.data() + b * want;
+          const int count = featurepoints::RowLength(row, want);
+          featurepoints::GatherRelative(this->Reader, block[b], row, count, q.data(), x);
+          if (!featurepoints::LocalPCA(q.data(), count, true, any, lambda, nrm))
+          {
+            continue;
+          }
+          // The kn nearest across the surface, in a strict order (distance, then rank).
+          order.clear();
+          for (int j = 0; j < count; ++j)
+          {
+            const double* y = q.data() + 3 * j;
+            const double h = y[0] * nrm[0] + y[1] * nrm[1] + y[2] * nrm[2];
+            order.emplace_back(y[0] * y[0] + y[1] * y[1] + y[2] * y[2] - h * h, j);
+          }
+          const int m = std::min(kn, count);
+          std::partial_sort(order.begin(), order.begin() + m, order.end());
+          Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+          for (int j = 0; j < m; ++j)
+          {
+            const double* y = q.data() + 3 * order[j].second;
+            std::copy_n(y, 3, across.data() + 3 * j);
+            mean += Eigen::Vector3d(y[0], y[1], y[2]);
+          }
+          mean /= m + 1;
+          // The plane of the wider neighbourhood's normal through the points kept: its residual
+          // per point, as LocalPCA's smallest eigenvalue would be for their own plane.
+          const Eigen::Vector3d n(nrm[0], nrm[1], nrm[2]);
+          double plane = mean.dot(n) * mean.dot(n);
+          for (int j = 0; j < m; ++j)
+          {
+            const double* y = across.data() + 3 * j;
+            const double h = (Eigen::Vector3d(y[0], y[1], y[2]) - mean).dot(n);
+            plane += h * h;
+          }
+          int dof = 0;
+          residual[r] = NoiseResidual(across.data(), m, nrm, plane / (m + 1), s, raw[r], dof);
+          rowDof[r] = static_cast<signed char>(std::min(dof, 127));
+          reach[r] = m > 0 ? order[m - 1].first : -1.0;
+        }
+      });
+    }
+    this->Variance = std::max(this->NoiseVariance(residual, raw, rowDof, kn + 1 - 6), floor);
+    this->NoiseReach2 = this->RowQuantile(reach, 0.5);
+  }
 }
 
 // Wilson and Hilferty: chi2(n) / n at the standard normal quantile z is about
@@ -4349,6 +4469,7 @@ int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)
 
   this->BeginStage("normals");
   run.ComputeNormals(this->NormalNeighbors, this->CloudCenter(neighborhoods), normal);
+  run.MeasureNoiseAcross(neighborhoods, this->NormalNeighbors);
   this->NoiseSigma = std::sqrt(run.Variance);
   this->UpdateProgress(0.2);
 

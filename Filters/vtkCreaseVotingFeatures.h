@@ -65,7 +65,13 @@
  *    hold both sides of a wall thinner than them (the same test of heights, after a second
  *    split along the plane of the point's group), the quadric is fitted to the point's side,
  *    its residual scaled to the full neighbourhood's degrees of freedom: the wall's thickness
- *    is not noise.
+ *    is not noise. Where the noise is large for those nearest (18 sigma^2 above the squared
+ *    radius r^2 of their tangent-plane footprint), nearest in space favour the neighbours near
+ *    the point's height and their plane tilts into the noise (0.84 of the true sigma at 1.5
+ *    spacings): sigma is then measured again on the NormalNeighbors nearest across the surface
+ *    among enough nearest in space that none within r lies beyond 3 sqrt(2) sigma in height
+ *    (at most NumberOfNeighbors), in the frame of their wider plane, from each new figure while
+ *    that number grows (at most 3 searches).
  *    At the widest scale, where neither the quadric, the hinge nor the crossing planes explain
  *    the points within the noise, a cubic height field that does (within the bound of its 10
  *    parameters, fitted to at least 100 points) stands for the smooth surface: a free-form face
