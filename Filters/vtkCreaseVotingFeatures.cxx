@@ -1871,8 +1871,10 @@ void CreaseRun::MeasureNoiseAcross(vtkPointCloudNeighborhoods* neighborhoods, in
     {
       return;
     }
-    const int want = static_cast<int>(std::min<double>(
-      std::min<vtkIdType>(this->K, this->N - 1), std::ceil((kn + 1) * (1.0 + ratio)) - 1.0));
+    // The same on every process of a distributed run (global figures only): rows with fewer
+    // points than that hold -1 past their last.
+    const int want =
+      static_cast<int>(std::min<double>(this->K, std::ceil((kn + 1) * (1.0 + ratio)) - 1.0));
     if (want <= used)
     {
       return;
@@ -1890,7 +1892,7 @@ void CreaseRun::MeasureNoiseAcross(vtkPointCloudNeighborhoods* neighborhoods, in
         this->Ids.begin() + std::min<vtkIdType>(this->Rows, start + BlockRows));
       if (!neighborhoods->FindNearestNeighbors(want, block, table))
       {
-        return; // aborted: the figure in space stands
+        table.assign(block.size() * static_cast<size_t>(want), -1); // no figure from these rows
       }
       vtkSMPTools::For(0, static_cast<vtkIdType>(block.size()), [&](vtkIdType begin, vtkIdType end) {
         NoiseScratch& s = noiseScratch.Local();
@@ -1939,9 +1941,13 @@ void CreaseRun::MeasureNoiseAcross(vtkPointCloudNeighborhoods* neighborhoods, in
           int dof = 0;
           residual[r] = NoiseResidual(across.data(), m, nrm, plane / (m + 1), s, raw[r], dof);
           rowDof[r] = static_cast<signed char>(std::min(dof, 127));
-          reach[r] = m > 0 ? order[m - 1].first : -1.0;
+          reach[r] = m > 0 ? std::max(order[m - 1].first, 0.0) : -1.0;
         }
       });
+    }
+    if (this->CountRows(residual) == 0)
+    {
+      return; // no row has a figure: the one before stands
     }
     this->Variance = std::max(this->NoiseVariance(residual, raw, rowDof, kn + 1 - 6), floor);
     this->NoiseReach2 = this->RowQuantile(reach, 0.5);
