@@ -4242,91 +4242,22 @@ vtkCreaseVotingFeatures::vtkCreaseVotingFeatures()
 
 vtkCreaseVotingFeatures::~vtkCreaseVotingFeatures() = default;
 
-int vtkCreaseVotingFeatures::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkCreaseVotingFeatures::Run(vtkPointSet* input, vtkPolyData* output)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
-  {
-    return 0;
-  }
-  this->ResetFigures();
   this->OnSites = false;
   this->OutlierRuns = 0;
   this->NumberOfOutliers = 0;
-  // A cloud far larger or smaller than 2^32 units: the fits keep squared distances and noise
-  // variances in float, which overflow or lose their precision there (a box scaled by 2^63 lost
-  // 7 of its 1,764 feature points, by 10^40 all but 9). It runs scaled by a power of two to an
-  // extent near 1, exactly, and its lengths are scaled back. Distributed runs keep their
-  // pieces' frame (the scale would have to be the whole cloud's).
-  const int exponent = this->IsDistributed() || !input->GetPoints() ||
-      input->GetNumberOfPoints() == 0
-    ? 0
-    : ScaledFrameExponent(input, 32);
-  if (exponent == 0)
-  {
-    return this->Detect(input, output);
-  }
-  vtkSmartPointer<vtkPointSet> scaled = vtkSmartPointer<vtkPointSet>::Take(input->NewInstance());
-  scaled->ShallowCopy(input);
-  vtkNew<vtkPoints> points;
-  points->SetDataType(input->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(input->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    input->GetPoint(i, x);
-    for (double& c : x)
-    {
-      c = std::ldexp(c, exponent);
-    }
-    points->SetPoint(i, x);
-  }
-  scaled->SetPoints(points);
-  const int result = this->Detect(scaled, output);
-  // Back to the input's units: the points (the input's own where the output holds them all),
-  // the offsets, the mean spacing and the noise figure.
-  if (output->GetPoints() == points.GetPointer())
-  {
-    output->SetPoints(input->GetPoints());
-  }
-  else if (vtkPoints* out = output->GetPoints())
-  {
-    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
-    {
-      double x[3];
-      out->GetPoint(i, x);
-      for (double& c : x)
-      {
-        c = std::ldexp(c, -exponent);
-      }
-      out->SetPoint(i, x);
-    }
-  }
-  if (vtkDataArray* offsets = output->GetPointData()->GetArray("CreaseOffset"))
-  {
-    // In double: lengths of a cloud this large or small may lie beyond float's range.
-    vtkNew<vtkDoubleArray> back;
-    back->SetName("CreaseOffset");
-    back->SetNumberOfComponents(3);
-    back->SetNumberOfTuples(offsets->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < offsets->GetNumberOfTuples(); ++i)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        back->SetComponent(i, c, std::ldexp(offsets->GetComponent(i, c), -exponent));
-      }
-    }
-    output->GetPointData()->AddArray(back); // replaces the array of that name
-  }
-  if (vtkDataArray* spacing = output->GetFieldData()->GetArray("MeanSpacing"))
-  {
-    spacing->SetTuple1(0, std::ldexp(spacing->GetTuple1(0), -exponent));
-  }
-  this->MeanSpacing = std::ldexp(this->MeanSpacing, -exponent);
-  this->NoiseSigma = std::ldexp(this->NoiseSigma, -exponent);
-  return result;
+  return this->Detect(input, output);
+}
+
+int vtkCreaseVotingFeatures::GetLengthPower(const char* name) const
+{
+  return std::strcmp(name, "CreaseOffset") == 0 ? 1 : 0;
+}
+
+void vtkCreaseVotingFeatures::ScaleFiguresBack(int exponent)
+{
+  this->NoiseSigma = std::ldexp(this->NoiseSigma, exponent);
 }
 
 int vtkCreaseVotingFeatures::Detect(vtkPointSet* input, vtkPolyData* output)

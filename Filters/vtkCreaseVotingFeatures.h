@@ -121,10 +121,10 @@
  * units of d and sigma, from the cloud itself: the result does not change when the cloud is
  * scaled or moved, and the neighbourhoods are counts, so denser and sparser regions are treated
  * alike. The fits keep squared lengths in float: a cloud whose extent lies beyond 2^-32 .. 2^32
- * units runs scaled by a power of two to an extent near 1, which is exact, and its lengths are
- * scaled back (CreaseOffset, then in double, the field MeanSpacing and GetNoiseSigma()): the
- * same mask at any scale from about 10^-289 to 10^298 (without it, 251 of 20,000 points changed
- * at 2^140 and none was found at 2^990). Distributed runs keep their pieces' frame.
+ * units runs scaled by a power of two, as every detector's does (vtkFeaturePointDetector::
+ * RequestData), CreaseOffset and GetNoiseSigma() scaled back: the same mask at any scale from
+ * about 10^-289 to 10^298 (without it, 251 of 20,000 points changed at 2^140 and none was found
+ * at 2^990).
  *
  * 7. Borders (Borders): a point whose 50 nearest on its sheet leave an empty sector above 120
  *    degrees in their tangent plane is on a border (sets of fewer than 25 connected such points,
@@ -390,9 +390,11 @@ protected:
   vtkCreaseVotingFeatures();
   ~vtkCreaseVotingFeatures() override;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int Run(vtkPointSet* input, vtkPolyData* output) override;
+  int GetLengthPower(const char* name) const override; // CreaseOffset: 1
+  void ScaleFiguresBack(int exponent) override;        // the noise figure
 
-  /** The detector's steps on `input` (RequestData's work). */
+  /** The detector's steps on `input` (Run()'s work; again on distinct positions or a subset). */
   int Detect(vtkPointSet* input, vtkPolyData* output);
 
   /**

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 vtkStandardNewMacro(vtkCurvatureDensityFeatures);
@@ -45,16 +46,13 @@ vtkCurvatureDensityFeatures::vtkCurvatureDensityFeatures()
 
 vtkCurvatureDensityFeatures::~vtkCurvatureDensityFeatures() = default;
 
-int vtkCurvatureDensityFeatures::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkCurvatureDensityFeatures::GetLengthPower(const char* name) const
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
-  {
-    return 0;
-  }
-  this->ResetFigures();
+  return std::strcmp(name, "Density") == 0 ? -1 : 0;
+}
+
+int vtkCurvatureDensityFeatures::Run(vtkPointSet* input, vtkPolyData* output)
+{
   const vtkIdType n = input->GetNumberOfPoints();
   using featurepoints::NewZeroArray;
   auto normals = NewZeroArray<vtkFloatArray>("Normals", 3, n);

@@ -78,7 +78,8 @@ protected:
   vtkCurvatureDensityFeatures();
   ~vtkCurvatureDensityFeatures() override;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int Run(vtkPointSet* input, vtkPolyData* output) override;
+  int GetLengthPower(const char* name) const override; // Density: -1 (points per length)
 
   int NumberOfNeighbors = 15;
   double CurvatureWeight = 1.0;

@@ -8,6 +8,7 @@
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -19,6 +20,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <Eigen/Eigenvalues>
@@ -717,6 +719,107 @@ void vtkFeaturePointDetector::GatherAll(std::vector<double>& values) const
 void vtkFeaturePointDetector::GatherAll(std::vector<long long>& values) const
 {
   this->GatherValues(values);
+}
+
+int vtkFeaturePointDetector::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  this->ResetFigures();
+  // A cloud far larger or smaller than 2^32 units: squared lengths kept in float overflow or
+  // lose their precision there (the default detector's fits: a box scaled by 2^63 lost 7 of its
+  // 1,764 feature points, by 10^40 all but 9), and the methods' float scores beyond 2^+-140 (NaN
+  // in SSI, PDI, Density). Distributed runs keep their pieces' frame (the scale would have to be
+  // the whole cloud's).
+  const int exponent = this->IsDistributed() || !input->GetPoints() ||
+      input->GetNumberOfPoints() == 0
+    ? 0
+    : ScaledFrameExponent(input, 32);
+  if (exponent == 0)
+  {
+    return this->Run(input, output);
+  }
+  vtkSmartPointer<vtkPointSet> scaled = vtkSmartPointer<vtkPointSet>::Take(input->NewInstance());
+  scaled->ShallowCopy(input);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(input->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    input->GetPoint(i, x);
+    for (double& c : x)
+    {
+      c = std::ldexp(c, exponent);
+    }
+    points->SetPoint(i, x);
+  }
+  scaled->SetPoints(points);
+  const int result = this->Run(scaled, output);
+  this->ScaleBack(input, points, exponent, output);
+  return result;
+}
+
+void vtkFeaturePointDetector::ScaleBack(
+  vtkPointSet* input, vtkPoints* scaled, int exponent, vtkPolyData* output)
+{
+  // The points: the input's own where the output holds them all.
+  if (output->GetPoints() == scaled)
+  {
+    output->SetPoints(input->GetPoints());
+  }
+  else if (vtkPoints* out = output->GetPoints())
+  {
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      out->GetPoint(i, x);
+      for (double& c : x)
+      {
+        c = std::ldexp(c, -exponent);
+      }
+      out->SetPoint(i, x);
+    }
+  }
+  vtkPointData* pd = output->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    const int power = array && array->GetName() ? this->GetLengthPower(array->GetName()) : 0;
+    if (power == 0 || input->GetPointData()->GetArray(array->GetName()) == array)
+    {
+      continue; // no unit, or the input's own array passed through
+    }
+    // In double: lengths of a cloud this large or small may lie beyond float's range.
+    vtkNew<vtkDoubleArray> back;
+    back->SetName(array->GetName());
+    back->SetNumberOfComponents(array->GetNumberOfComponents());
+    back->SetNumberOfTuples(array->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        back->SetComponent(i, c, std::ldexp(array->GetComponent(i, c), -power * exponent));
+      }
+    }
+    const bool active = pd->GetScalars() == array;
+    pd->AddArray(back); // replaces the array of that name, in its place
+    if (active)
+    {
+      pd->SetActiveScalars(back->GetName());
+    }
+  }
+  if (vtkDataArray* spacing = output->GetFieldData()->GetArray("MeanSpacing"))
+  {
+    spacing->SetTuple1(0, std::ldexp(spacing->GetTuple1(0), -exponent));
+  }
+  this->MeanSpacing = std::ldexp(this->MeanSpacing, -exponent);
+  this->ScaleFiguresBack(-exponent);
 }
 
 int vtkFeaturePointDetector::ScaledFrameExponent(vtkPointSet* cloud, int limit)

@@ -53,6 +53,7 @@ class vtkMultiProcessController;
 class vtkPointCloudNeighborhoods;
 class vtkPoints;
 class vtkPointSet;
+class vtkPolyData;
 class vtkUnsignedCharArray;
 
 class FEATUREPOINTSFILTERS_EXPORT vtkFeaturePointDetector : public vtkPolyDataAlgorithm
@@ -243,6 +244,36 @@ protected:
 
   /** Clears the figures of the last run. */
   void ResetFigures();
+
+  /**
+   * Clears the figures and runs the detector (Run()). A cloud whose extent lies beyond
+   * 2^-32 .. 2^32 units (squared lengths overflow or lose their precision in float, and beyond
+   * 2^+-140 in the methods' float scores too) runs scaled by a power of two to a robust extent
+   * near 1 (ScaledFrameExponent()), which scales every coordinate exactly; the output points
+   * are the input's, and the lengths are scaled back: MeanSpacing, the point arrays of a length
+   * unit (GetLengthPower(), then double arrays: their values may lie beyond float's range) and
+   * the detector's own figures (ScaleFiguresBack()). Distributed runs keep their pieces' frame.
+   */
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /** The detector on `input`, into `output` (RequestData's work, figures cleared). */
+  virtual int Run(vtkPointSet* input, vtkPolyData* output) = 0;
+
+  /**
+   * The power of the length unit of the output point array `name` (1: a length, -1: an inverse
+   * length; 0, the default: no unit): how RequestData() scales it back from a scaled frame.
+   */
+  virtual int GetLengthPower(const char* vtkNotUsed(name)) const { return 0; }
+
+  /** Scales the detector's own length figures by 2^exponent (RequestData(), scaled frame). */
+  virtual void ScaleFiguresBack(int vtkNotUsed(exponent)) {}
+
+private:
+  // RequestData(), scaled frame: the output back in the input's units (`scaled`: the points
+  // the run was given, scaled by 2^exponent).
+  void ScaleBack(vtkPointSet* input, vtkPoints* scaled, int exponent, vtkPolyData* output);
+
+protected:
 
   /**
    * Builds `neighborhoods` over the input's points and checks that neighbourhoods of k points

@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <vector>
 
@@ -414,16 +415,13 @@ bool vtkFeaturePointExtraction::ComputeMeanDistances(vtkPointCloudNeighborhoods*
   return true;
 }
 
-int vtkFeaturePointExtraction::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkFeaturePointExtraction::GetLengthPower(const char* name) const
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
-  {
-    return 0;
-  }
-  this->ResetFigures();
+  return std::strcmp(name, "SSI") == 0 ? 1 : std::strcmp(name, "PDI") == 0 ? -1 : 0;
+}
+
+int vtkFeaturePointExtraction::Run(vtkPointSet* input, vtkPolyData* output)
+{
 
   const vtkIdType n = input->GetNumberOfPoints();
   auto normals = featurepoints::NewZeroArray<vtkFloatArray>("Normals", 3, n);

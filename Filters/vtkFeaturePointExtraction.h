@@ -212,7 +212,8 @@ protected:
   vtkFeaturePointExtraction();
   ~vtkFeaturePointExtraction() override;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int Run(vtkPointSet* input, vtkPolyData* output) override;
+  int GetLengthPower(const char* name) const override; // SSI: 1 (a length), PDI: -1
 
   /**
    * The non-candidates scored for the AUTOMATIC threshold (see the class comment): the points of

@@ -23,16 +23,8 @@ vtkSurfaceVariationFeatures::vtkSurfaceVariationFeatures()
 
 vtkSurfaceVariationFeatures::~vtkSurfaceVariationFeatures() = default;
 
-int vtkSurfaceVariationFeatures::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkSurfaceVariationFeatures::Run(vtkPointSet* input, vtkPolyData* output)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
-  {
-    return 0;
-  }
-  this->ResetFigures();
   const vtkIdType n = input->GetNumberOfPoints();
   auto normals = featurepoints::NewZeroArray<vtkFloatArray>("Normals", 3, n);
   auto variation = featurepoints::NewZeroArray<vtkFloatArray>("SurfaceVariation", 1, n);

@@ -50,7 +50,7 @@ protected:
   vtkSurfaceVariationFeatures();
   ~vtkSurfaceVariationFeatures() override;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int Run(vtkPointSet* input, vtkPolyData* output) override;
 
   int NumberOfNeighbors = 15;
 

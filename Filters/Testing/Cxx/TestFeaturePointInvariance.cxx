@@ -5,14 +5,40 @@
 #include "FeaturePointsTestRun.h"
 
 #include "vtkCreaseVotingFeatures.h"
+#include "vtkCurvatureDensityFeatures.h"
 #include "vtkDataArray.h"
+#include "vtkFeaturePointExtraction.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkSmoothShrinkIndexFeatures.h"
+#include "vtkSurfaceVariationFeatures.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <random>
 #include <vector>
+
+namespace
+{
+// The cloud's points (double) times 2^power, exactly.
+vtkSmartPointer<vtkPolyData> ScaledCopy(vtkPolyData* cloud, int power)
+{
+  vtkNew<vtkPoints> scaled;
+  scaled->SetDataTypeToDouble();
+  scaled->SetNumberOfPoints(cloud->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < scaled->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    cloud->GetPoint(i, p);
+    scaled->SetPoint(i, std::ldexp(p[0], power), std::ldexp(p[1], power), std::ldexp(p[2], power));
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(scaled);
+  return data;
+}
+}
 
 int TestFeaturePointInvariance(int, char*[])
 {
@@ -128,18 +154,8 @@ int TestFeaturePointInvariance(int, char*[])
     CountSet(Mask(creaseReference->GetOutput())));
   for (const int power : { 70, 140, 990, -70, -140, -960 })
   {
-    const double scale = std::ldexp(1.0, power);
-    vtkNew<vtkPoints> scaled;
-    scaled->SetDataTypeToDouble();
-    scaled->SetNumberOfPoints(cloud.Data->GetNumberOfPoints());
-    for (vtkIdType i = 0; i < scaled->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      cloud.Data->GetPoint(i, p);
-      scaled->SetPoint(i, p[0] * scale, p[1] * scale, p[2] * scale);
-    }
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(scaled);
+    vtkSmartPointer<vtkPolyData> data = ScaledCopy(cloud.Data, power);
+    vtkPoints* scaled = data->GetPoints();
     auto result = crease(data);
     vtkPolyData* out = result->GetOutput();
     vtkDataArray* offsets = out->GetPointData()->GetArray("CreaseOffset");
@@ -167,6 +183,67 @@ int TestFeaturePointInvariance(int, char*[])
     FP_CHECK(sigmaRatio == 1.0 && spacingRatio == 1.0,
       "crease scaled x2^%d: noise ratio %g, spacing ratio %g", power, sigmaRatio, spacingRatio);
     FP_CHECK(AllFinite(out), "crease scaled x2^%d: non-finite output", power);
+  }
+  // Every other method at the same scales: the same mask, and the arrays of a length unit (SSI,
+  // PDI, Density) scaled with the cloud. Before they ran in a scaled frame, SSI (2^140), PDI and
+  // Density (2^-140) held NaN, and at 2^990 / 2^-960 no method marked a point.
+  struct Method
+  {
+    const char* Name;
+    std::function<vtkSmartPointer<vtkFeaturePointDetector>()> Make;
+    std::vector<std::pair<const char*, int>> Lengths; // array, power of the length unit
+  };
+  const Method methods[] = {
+    { "huang2023", [] { return vtkSmartPointer<vtkFeaturePointDetector>(
+                          vtkSmartPointer<vtkFeaturePointExtraction>::New()); },
+      { { "SSI", 1 }, { "PDI", -1 } } },
+    { "ssi", [] { return vtkSmartPointer<vtkFeaturePointDetector>(
+                    vtkSmartPointer<vtkSmoothShrinkIndexFeatures>::New()); },
+      { { "SSI", 1 } } },
+    { "pca", [] { return vtkSmartPointer<vtkFeaturePointDetector>(
+                    vtkSmartPointer<vtkSurfaceVariationFeatures>::New()); },
+      {} },
+    { "wang-yuan", [] { return vtkSmartPointer<vtkFeaturePointDetector>(
+                          vtkSmartPointer<vtkCurvatureDensityFeatures>::New()); },
+      { { "Density", -1 } } },
+  };
+  for (const Method& method : methods)
+  {
+    auto reference = method.Make();
+    reference->SetInputData(cloud.Data);
+    reference->Update();
+    vtkPolyData* expected = reference->GetOutput();
+    FP_CHECK(CountSet(Mask(expected)) > 10, "%s: only %ld feature points", method.Name,
+      CountSet(Mask(expected)));
+    for (const int power : { 140, 990, -140, -960 })
+    {
+      vtkSmartPointer<vtkPolyData> data = ScaledCopy(cloud.Data, power);
+      vtkPoints* scaled = data->GetPoints();
+      auto result = method.Make();
+      result->SetInputData(data);
+      result->Update();
+      vtkPolyData* out = result->GetOutput();
+      long maskDiffer = 0, valuesOff = 0;
+      for (vtkIdType i = 0; i < scaled->GetNumberOfPoints(); ++i)
+      {
+        maskDiffer += Mask(out)->GetValue(i) != Mask(expected)->GetValue(i);
+        for (const auto& length : method.Lengths)
+        {
+          vtkDataArray* a = out->GetPointData()->GetArray(length.first);
+          vtkDataArray* b = expected->GetPointData()->GetArray(length.first);
+          valuesOff += !a || !b ||
+            std::ldexp(a->GetComponent(i, 0), -length.second * power) != b->GetComponent(i, 0);
+        }
+      }
+      std::printf("%s, scaled x2^%d: %ld feature points, %ld mask differences, %ld length "
+                  "values off\n",
+        method.Name, power, CountSet(Mask(out)), maskDiffer, valuesOff);
+      FP_CHECK(maskDiffer == 0, "%s scaled x2^%d: %ld mask differences", method.Name, power,
+        maskDiffer);
+      FP_CHECK(valuesOff == 0, "%s scaled x2^%d: %ld length values off", method.Name, power,
+        valuesOff);
+      FP_CHECK(AllFinite(out), "%s scaled x2^%d: non-finite output", method.Name, power);
+    }
   }
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }
