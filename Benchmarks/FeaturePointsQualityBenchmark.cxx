@@ -1444,6 +1444,16 @@ int main(int argc, char* argv[])
       { "Bracket, sigma 1.5 s corners typed", 0.68 },      // 0.714
       { "Box, sigma 2.0 s corners typed", 0.55 },          // 0.600
       { "Bracket, sigma 2.0 s corners typed", 0.50 },      // 0.548
+      { "Half cylinder, sigma 1.0 s F1", 0.86 },           // 0.893
+      { "Holed plate, sigma 1.0 s F1", 0.87 },             // 0.902
+      { "Half cylinder, sigma 1.5 s F1", 0.74 },           // 0.767
+      { "Holed plate, sigma 1.5 s F1", 0.76 },             // 0.794
+      { "Half cylinder, sigma 1.0 s borders typed", 0.78 }, // 0.814
+      { "Holed plate, sigma 1.0 s borders typed", 0.80 },   // 0.840
+      { "Half cylinder, sigma 1.5 s borders typed", 0.60 }, // 0.637
+      { "Holed plate, sigma 1.5 s borders typed", 0.65 },   // 0.688
+      // A handful of points (two borders meeting in a plane): one miss is 0.1-0.2.
+      { "Half cylinder, sigma 1.5 s corners typed", 0.40 }, // 0.600
       { "Box, noise 0.1 -> 0.5 s F1", 0.55 },              // 0.599
       { "Box, noise 0.1 -> 0.5 s corners typed", 0.50 },   // 0.556
     };
@@ -1555,6 +1565,13 @@ int main(int argc, char* argv[])
             std::to_string(noise).substr(0, 3) + " s",
           makeCase(model, 5.0, 20000, noise));
       }
+    }
+    // The open surfaces (a scan's borders) under the same noise: the borders lose recall first.
+    for (const double noise : { 1.0, 1.5 })
+    {
+      const std::string sigma = ", sigma " + std::to_string(noise).substr(0, 3) + " s";
+      runCase("Half cylinder" + sigma, makeCase(vtkFeatureModelSource::HALF_CYLINDER, 5.0, 20000, noise));
+      runCase("Holed plate" + sigma, makeCase(vtkFeatureModelSource::PLATE_WITH_HOLE, 5.0, 20000, noise));
     }
     {
       // A scan's noise grows with range: the box at 20,000 points, its noise (isotropic) growing
