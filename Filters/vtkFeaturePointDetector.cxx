@@ -786,40 +786,45 @@ void vtkFeaturePointDetector::ScaleBack(
       out->SetPoint(i, x);
     }
   }
-  vtkPointData* pd = output->GetPointData();
-  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
-  {
-    vtkDataArray* array = pd->GetArray(a);
-    const int power = array && array->GetName() ? this->GetLengthPower(array->GetName()) : 0;
-    if (power == 0 || input->GetPointData()->GetArray(array->GetName()) == array)
-    {
-      continue; // no unit, or the input's own array passed through
-    }
-    // In double: lengths of a cloud this large or small may lie beyond float's range.
-    vtkNew<vtkDoubleArray> back;
-    back->SetName(array->GetName());
-    back->SetNumberOfComponents(array->GetNumberOfComponents());
-    back->SetNumberOfTuples(array->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-    {
-      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
-      {
-        back->SetComponent(i, c, std::ldexp(array->GetComponent(i, c), -power * exponent));
-      }
-    }
-    const bool active = pd->GetScalars() == array;
-    pd->AddArray(back); // replaces the array of that name, in its place
-    if (active)
-    {
-      pd->SetActiveScalars(back->GetName());
-    }
-  }
+  this->ScaleLengthArrays(output->GetPointData(), -exponent, input->GetPointData());
   if (vtkDataArray* spacing = output->GetFieldData()->GetArray("MeanSpacing"))
   {
     spacing->SetTuple1(0, std::ldexp(spacing->GetTuple1(0), -exponent));
   }
   this->MeanSpacing = std::ldexp(this->MeanSpacing, -exponent);
   this->ScaleFiguresBack(-exponent);
+}
+
+void vtkFeaturePointDetector::ScaleLengthArrays(
+  vtkPointData* arrays, int lengthExponent, vtkPointData* passedThrough) const
+{
+  for (int a = 0; a < arrays->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = arrays->GetArray(a);
+    const int power = array && array->GetName() ? this->GetLengthPower(array->GetName()) : 0;
+    if (power == 0 || (passedThrough && passedThrough->GetArray(array->GetName()) == array))
+    {
+      continue; // no unit, or the input's own array passed through
+    }
+    // In double: lengths of a cloud this large or small may lie beyond float's range.
+    vtkNew<vtkDoubleArray> scaled;
+    scaled->SetName(array->GetName());
+    scaled->SetNumberOfComponents(array->GetNumberOfComponents());
+    scaled->SetNumberOfTuples(array->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        scaled->SetComponent(i, c, std::ldexp(array->GetComponent(i, c), power * lengthExponent));
+      }
+    }
+    const bool active = arrays->GetScalars() == array;
+    arrays->AddArray(scaled); // replaces the array of that name, in its place
+    if (active)
+    {
+      arrays->SetActiveScalars(scaled->GetName());
+    }
+  }
 }
 
 int vtkFeaturePointDetector::ScaledFrameExponent(vtkPointSet* cloud, int limit)

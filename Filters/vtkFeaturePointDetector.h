@@ -52,6 +52,7 @@ class vtkDataArray;
 class vtkMultiProcessController;
 class vtkPointCloudNeighborhoods;
 class vtkPoints;
+class vtkPointData;
 class vtkPointSet;
 class vtkPolyData;
 class vtkUnsignedCharArray;
@@ -191,6 +192,23 @@ public:
   ///@}
 
   /**
+   * The power of the length unit of the output point array `name` (1: a length, -1: an inverse
+   * length; 0, the default: no unit): how RequestData() scales it back from a scaled frame, and
+   * how a caller that scales the cloud itself (the featurepoints command) does.
+   */
+  virtual int GetLengthPower(const char* vtkNotUsed(name)) const { return 0; }
+
+  /**
+   * Scales every array of `arrays` that has a length unit (GetLengthPower() p) by
+   * 2^(p lengthExponent), exactly, into a double array of the same name and place (its values
+   * may lie beyond float's range); the arrays that are `passedThrough`'s own are left alone.
+   * RequestData() uses it after a run in a scaled frame; so does a caller that scales the
+   * cloud itself.
+   */
+  void ScaleLengthArrays(
+    vtkPointData* arrays, int lengthExponent, vtkPointData* passedThrough = nullptr) const;
+
+  /**
    * The power of two by which to scale a cloud so that squares and products of its coordinate
    * differences, in double and in float, neither overflow nor underflow; 0 where its extent lies
    * within 2^-limit .. 2^limit (its results do not change). Others are scaled to a robust extent
@@ -258,12 +276,6 @@ protected:
 
   /** The detector on `input`, into `output` (RequestData's work, figures cleared). */
   virtual int Run(vtkPointSet* input, vtkPolyData* output) = 0;
-
-  /**
-   * The power of the length unit of the output point array `name` (1: a length, -1: an inverse
-   * length; 0, the default: no unit): how RequestData() scales it back from a scaled frame.
-   */
-  virtual int GetLengthPower(const char* vtkNotUsed(name)) const { return 0; }
 
   /** Scales the detector's own length figures by 2^exponent (RequestData(), scaled frame). */
   virtual void ScaleFiguresBack(int vtkNotUsed(exponent)) {}

@@ -117,9 +117,6 @@ struct Method
   // Whether the output's FeatureType array holds vtkCreaseVotingFeatures::FeatureTypes: the
   // summary then counts the feature points of each type.
   bool FeatureTypes = false;
-  // The output arrays measured in the cloud's units, with the power of the length they scale
-  // with (SSI is a length, PDI an inverse length): see ScaledFrame.
-  std::vector<std::pair<const char*, int>> LengthArrays = {};
 };
 
 vtkCreaseVotingFeatures* Crease(vtkFeaturePointDetector* f)
@@ -150,21 +147,18 @@ const std::vector<Method>& Methods()
           ? Crease(f)->GetGrowThresholdUsed()
           : std::nan("");
       },
-      true, { { "CreaseOffset", 1 } } },
+      true },
     { "huang2023",
       "the proposed method: SSI and PDI mixed into F, voxel density pre-filter (Huang, Chen, "
       "Zhang, Lu 2023)",
-      [] { return vtkSmartPointer<vtkFeaturePointExtraction>::New(); }, nullptr, nullptr, false,
-      { { "SSI", 1 }, { "PDI", -1 } } },
+      [] { return vtkSmartPointer<vtkFeaturePointExtraction>::New(); } },
     { "ssi", "baseline: Smooth Shrink Index alone (Nie 2016), score F = SSI / spacing",
-      [] { return vtkSmartPointer<vtkSmoothShrinkIndexFeatures>::New(); }, nullptr, nullptr,
-      false, { { "SSI", 1 }, { "PDI", -1 } } },
+      [] { return vtkSmartPointer<vtkSmoothShrinkIndexFeatures>::New(); } },
     { "pca", "baseline: PCA surface variation lambda0 / (lambda0 + lambda1 + lambda2)",
       [] { return vtkSmartPointer<vtkSurfaceVariationFeatures>::New(); } },
     { "wang-yuan", "baseline: curvature, normal angle and density (Wang & Yuan, as the paper "
                    "describes it)",
-      [] { return vtkSmartPointer<vtkCurvatureDensityFeatures>::New(); }, nullptr, nullptr, false,
-      { { "Density", -1 } } },
+      [] { return vtkSmartPointer<vtkCurvatureDensityFeatures>::New(); } },
   };
   return methods;
 }
@@ -1297,50 +1291,13 @@ vtkSmartPointer<vtkPolyData> ScaledFrame(
 }
 
 // Back to the input's units after a run in a scaled frame: the output gets the input's points,
-// and each array measured in lengths its values in the input's units when they fit its type
-// (else it stays in the frame's units, with a note). The mean spacing field too.
-void UnscaleResult(vtkPolyData* result, vtkPointSet* cloud, const Method& method, int exponent,
-  const std::string& input)
+// and each array measured in lengths (the detector's GetLengthPower()) its values in the input's
+// units, in double. The mean spacing field too.
+void UnscaleResult(
+  vtkPolyData* result, vtkPointSet* cloud, vtkFeaturePointDetector* detector, int exponent)
 {
   result->SetPoints(cloud->GetPoints());
-  for (const auto& lengthArray : method.LengthArrays)
-  {
-    vtkDataArray* a = result->GetPointData()->GetArray(lengthArray.first);
-    if (!a)
-    {
-      continue;
-    }
-    const int power = -exponent * lengthArray.second;
-    const double largest = a->GetDataType() == VTK_FLOAT ? VTK_FLOAT_MAX : VTK_DOUBLE_MAX;
-    const double smallest = a->GetDataType() == VTK_FLOAT ? VTK_FLOAT_MIN : VTK_DOUBLE_MIN;
-    bool fits = true;
-    for (vtkIdType i = 0; i < a->GetNumberOfValues() && fits; ++i)
-    {
-      const double v = std::abs(std::ldexp(a->GetComponent(i / a->GetNumberOfComponents(),
-                                             static_cast<int>(i % a->GetNumberOfComponents())),
-        power));
-      fits = std::isfinite(v) && v <= largest && (v == 0.0 || v >= smallest);
-    }
-    if (!fits)
-    {
-      if (!Quiet)
-      {
-        std::fprintf(stderr,
-          "featurepoints: note: %s: array '%s' is given for the cloud scaled by 2^%d (in the "
-          "input's units its values do not fit a %s)\n",
-          input.c_str(), lengthArray.first, exponent, a->GetDataTypeAsString());
-      }
-      continue;
-    }
-    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-    {
-      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
-      {
-        a->SetComponent(i, c, std::ldexp(a->GetComponent(i, c), power));
-      }
-    }
-    a->Modified();
-  }
+  detector->ScaleLengthArrays(result->GetPointData(), -exponent, cloud->GetPointData());
   if (auto* spacing = vtkDoubleArray::SafeDownCast(result->GetFieldData()->GetArray("MeanSpacing")))
   {
     spacing->SetValue(0, spacing->GetValue(0) * LengthUnit);
@@ -2017,7 +1974,7 @@ private:
         this->FrameOffsets = vtk::TakeSmartPointer(offsets->NewInstance());
         this->FrameOffsets->DeepCopy(offsets);
       }
-      UnscaleResult(this->Result, this->Cloud, *this->M, exponent, s.Input);
+      UnscaleResult(this->Result, this->Cloud, this->Filter, exponent);
     }
     this->CheckInputArrays();
     const std::string nonFinite = FindNonFinite(this->Result, this->Cloud);

@@ -11,6 +11,7 @@
 #include "LASTestFile.h"
 
 #include "vtkBase64Utilities.h"
+#include "vtkDataArray.h"
 #include "vtkFeatureModelSource.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -828,6 +829,39 @@ void FarOutliers()
   }
   Spit(Path("cube.xyz"), cube.str());
   Spit(Path("far.xyz"), far.str());
+  {
+    // The cube scaled by 2^200 (exact): the method runs in a scaled frame and its arrays of a
+    // length unit come back in the input's units, in double (PDI, an inverse length, was 0 in
+    // float: 2^-200 lies below float's range).
+    std::ostringstream big;
+    big.precision(17);
+    std::istringstream cubeRows(cube.str());
+    for (double x, y, z; cubeRows >> x >> y >> z;)
+    {
+      big << std::ldexp(x, 200) << " " << std::ldexp(y, 200) << " " << std::ldexp(z, 200) << "\n";
+    }
+    Spit(Path("big.xyz"), big.str());
+    ExpectSuccess("the cube scaled by 2^200, huang2023",
+      { Path("big.xyz"), Path("big.vtp"), "--method", "huang2023" });
+    ExpectSuccess("the cube, huang2023", { Path("cube.xyz"), Path("cube.vtp"), "--method", "huang2023" });
+    std::string error;
+    vtkSmartPointer<vtkPointSet> scaled = vtkPointCloudIO::Read(Path("big.vtp"), error);
+    vtkSmartPointer<vtkPointSet> plain = vtkPointCloudIO::Read(Path("cube.vtp"), error);
+    vtkDataArray* a = scaled ? scaled->GetPointData()->GetArray("PDI") : nullptr;
+    vtkDataArray* b = plain ? plain->GetPointData()->GetArray("PDI") : nullptr;
+    long off = 0, nonzero = 0;
+    for (vtkIdType i = 0; a && b && i < b->GetNumberOfTuples(); ++i)
+    {
+      nonzero += b->GetTuple1(i) != 0.0;
+      off += std::abs(std::ldexp(a->GetTuple1(i), 200) - b->GetTuple1(i)) >
+        1e-6 * std::abs(b->GetTuple1(i));
+    }
+    std::printf("the cube scaled by 2^200: %ld of %ld PDI values off\n", off, nonzero);
+    Check(a && b && nonzero > 0 && off == 0,
+      "the cube scaled by 2^200: PDI not in the input's units (" + std::to_string(off) + " off)");
+    ::unlink(Path("big.vtp").c_str());
+    ::unlink(Path("cube.vtp").c_str());
+  }
   const Run alone = ExpectSuccess("a cube", { Path("cube.xyz"), Path("cube.csv") });
   const Run mixed = ExpectSuccess("a cube with 1 % of its points near 1e200",
     { Path("far.xyz"), Path("far.csv") }, 20.0);
