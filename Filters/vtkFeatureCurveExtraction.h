@@ -69,7 +69,11 @@
  *    each end proposes its 3 nearest such ends) are joined when all the cloud's points
  *    bend across the gap's line: over the whole gap, the two faces hinged on it differ in slope
  *    by more than 3 standard errors, and by a crease's angle (10 degrees) or less than 3
- *    standard errors below it (from the faces' residuals: the cloud's own noise), and no
+ *    standard errors below it (from the faces' residuals: the cloud's own noise; measured on
+ *    the points within 1.5 FitRadius s of the line, or, where that does not tell and each face
+ *    stays one plane that far, within 3 FitRadius s, a third of the error: a 15 degree crease
+ *    under noise of 0.5 s bends by less than 3 errors of the narrow section over a gap of 20 s),
+ *    and no
  *    stretch of 2 FitRadius s along it looks flat (a bend nearer to none than to the gap's, and
  *    off the latter by more than 3 of its own errors, raised for the number of stretches
  *    tested: one in many looks flat by chance). The
