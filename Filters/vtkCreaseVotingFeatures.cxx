@@ -762,12 +762,13 @@ Eigen::Vector3d NormalsSpread(const std::vector<Eigen::Vector3d>& nr, const Eige
     mean += turned[j];
   }
   mean /= static_cast<double>(m);
-  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  featurepoints::OuterSum sum;
   for (size_t j = 0; j < m; ++j)
   {
     turned[j] -= mean;
-    spread += turned[j] * turned[j].transpose();
+    sum.Add(turned[j]);
   }
+  const Eigen::Matrix3d spread = sum.Matrix();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(spread);
   if (oriented)
@@ -2796,11 +2797,12 @@ bool CreaseRun::LinkAcrossRows(vtkIdType id, const int32_t* row, int count, int3
     mean += p[j + 1];
   }
   mean /= static_cast<double>(first + 1);
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  featurepoints::OuterSum sum;
   for (int j = 0; j <= first; ++j)
   {
-    scatter += (p[j] - mean) * (p[j] - mean).transpose();
+    sum.Add(p[j] - mean);
   }
+  const Eigen::Matrix3d scatter = sum.Matrix();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
   const Eigen::Vector3d spread = solver.eigenvalues(); // ascending
   if (!(spread[2] > 0.0) || spread[1] >= CollinearSpread * spread[2])
@@ -4836,12 +4838,12 @@ vtkIdType vtkCreaseVotingFeatures::FindOutliers(vtkPointCloudNeighborhoods* neig
         mean += Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
       }
       mean /= count;
-      Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+      featurepoints::OuterSum sum;
       for (int j = 0; j < count; ++j)
       {
-        const Eigen::Vector3d v = Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]) - mean;
-        scatter += v * v.transpose();
+        sum.Add(Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]) - mean);
       }
+      const Eigen::Matrix3d scatter = sum.Matrix();
       if (!scatter.allFinite())
       {
         return -1.0;

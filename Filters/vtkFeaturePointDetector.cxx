@@ -232,7 +232,7 @@ double vtkFeaturePointDetector::AutomaticThreshold(
   {
     return 0.0;
   }
-  std::sort(sorted.begin(), sorted.end());
+  vtkSMPTools::Sort(sorted.begin(), sorted.end());
   std::vector<double> value(sorted.size());
   std::vector<int64_t> cumulative(sorted.size() + 1, 0); // weight of the first i entries
   for (size_t i = 0; i < sorted.size(); ++i)

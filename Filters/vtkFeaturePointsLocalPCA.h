@@ -129,6 +129,33 @@ inline void GatherRelative(
   GatherRelative(PointReader(points), id, row, count, q, x);
 }
 
+// The sum of the outer products v v^T of the vectors added: the upper triangle summed in the
+// order they come, then mirrored. v_i v_j and v_j v_i are the same product, so this is
+// `m += v * v.transpose()` entry for entry, bit for bit, without the partial stores and loads
+// through memory that Eigen's expression compiles to (a stall each: about half the time of the
+// outlier screen's plane fits went there).
+struct OuterSum
+{
+  double C[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // xx xy xz yy yz zz
+  void Add(double x, double y, double z)
+  {
+    this->C[0] += x * x;
+    this->C[1] += x * y;
+    this->C[2] += x * z;
+    this->C[3] += y * y;
+    this->C[4] += y * z;
+    this->C[5] += z * z;
+  }
+  void Add(const Eigen::Vector3d& v) { this->Add(v[0], v[1], v[2]); }
+  Eigen::Matrix3d Matrix() const
+  {
+    Eigen::Matrix3d m;
+    m << this->C[0], this->C[1], this->C[2], this->C[1], this->C[3], this->C[4], this->C[2],
+      this->C[4], this->C[5];
+    return m;
+  }
+};
+
 /**
  * Covariance of the first `count` points of `q` (coordinates relative to the query point, x y z
  * per point), plus the query point itself (the origin) when `withOrigin`, about their mean;
@@ -152,27 +179,16 @@ inline bool LocalPCA(const double* q, int count, bool withOrigin, const double o
     mean += Eigen::Vector3d(q[3 * j], q[3 * j + 1], q[3 * j + 2]);
   }
   mean /= m;
-  // The upper triangle, summed in the points' order, then mirrored: v_i v_j and v_j v_i are the
-  // same product, so this is the full outer-product sum, entry for entry.
-  double c[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // xx xy xz yy yz zz
-  auto add = [&c](double x, double y, double z) {
-    c[0] += x * x;
-    c[1] += x * y;
-    c[2] += x * z;
-    c[3] += y * y;
-    c[4] += y * z;
-    c[5] += z * z;
-  };
+  OuterSum c;
   for (int j = 0; j < count; ++j)
   {
-    add(q[3 * j] - mean[0], q[3 * j + 1] - mean[1], q[3 * j + 2] - mean[2]);
+    c.Add(q[3 * j] - mean[0], q[3 * j + 1] - mean[1], q[3 * j + 2] - mean[2]);
   }
   if (withOrigin)
   {
-    add(mean[0], mean[1], mean[2]);
+    c.Add(mean[0], mean[1], mean[2]);
   }
-  Eigen::Matrix3d cov;
-  cov << c[0], c[1], c[2], c[1], c[3], c[4], c[2], c[4], c[5];
+  const Eigen::Matrix3d cov = c.Matrix();
   if (!cov.allFinite())
   {
     return false;
