@@ -2561,6 +2561,35 @@ CurveRun::Bend CurveRun::BendAt(const V3& x, const V3& t, double halfLength, Eig
     u = plane.eigenvectors().col(1);
   }
   const Eigen::Vector2d v(-u[1], u[0]);
+  // The residual of a quadratic height over u (about (ma, mh)) through the points of one side
+  // (side 0 or 1, along u) or all of them (side -1); `finite`: whether its fit is.
+  auto quadraticResidual = [&](int side, double ma, double mh, bool& finite) {
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d right = Eigen::Vector3d::Zero();
+    for (const auto& p : q)
+    {
+      if (side < 0 || (p.dot(u) >= 0.0) == (side == 1))
+      {
+        const double a = p.dot(u) - ma;
+        const Eigen::Vector3d row(1.0, a, a * a);
+        normal += row * row.transpose();
+        right += row * (p.dot(v) - mh);
+      }
+    }
+    const Eigen::Vector3d coefficients = normal.ldlt().solve(right);
+    finite = coefficients.allFinite();
+    double rss = 0.0;
+    for (const auto& p : q)
+    {
+      if (side < 0 || (p.dot(u) >= 0.0) == (side == 1))
+      {
+        const double a = p.dot(u) - ma;
+        const double e = p.dot(v) - mh - coefficients.dot(Eigen::Vector3d(1.0, a, a * a));
+        rss += e * e;
+      }
+    }
+    return rss;
+  };
   double slope[2], variance[2], hinge = 0.0;
   bool planar = true;
   for (int g = 0; g < 2; ++g)
@@ -2608,52 +2637,16 @@ CurveRun::Bend CurveRun::BendAt(const V3& x, const V3& t, double halfLength, Eig
     hinge += residual;
     // The same side's height as a quadratic over u: a bend within the side (another feature in
     // the section, a curved face) leaves significantly less.
-    Eigen::Matrix3d sideNormal = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d sideRight = Eigen::Vector3d::Zero();
-    for (const auto& p : q)
-    {
-      if ((p.dot(u) >= 0.0) == (g == 1))
-      {
-        const double a = p.dot(u) - ma;
-        const Eigen::Vector3d row(1.0, a, a * a);
-        sideNormal += row * row.transpose();
-        sideRight += row * (p.dot(v) - mh);
-      }
-    }
-    const Eigen::Vector3d sideFit = sideNormal.ldlt().solve(sideRight);
-    double curved = 0.0;
-    for (const auto& p : q)
-    {
-      if ((p.dot(u) >= 0.0) == (g == 1))
-      {
-        const double a = p.dot(u) - ma;
-        const double e = p.dot(v) - mh - sideFit.dot(Eigen::Vector3d(1.0, a, a * a));
-        curved += e * e;
-      }
-    }
-    planar = planar && n > 3 && sideFit.allFinite() &&
+    bool finite = false;
+    const double curved = quadraticResidual(g, ma, mh, finite);
+    planar = planar && n > 3 && finite &&
       (residual - curved) * (n - 3) <=
         CreaseSignificance * CreaseSignificance * std::max(curved, 0.0);
   }
   // One smooth face instead: a quadratic height over u through all the points. Where it leaves
   // no more than the two faces (F of its one parameter fewer), the section bends smoothly.
-  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d right = Eigen::Vector3d::Zero();
-  for (const auto& p : q)
-  {
-    const double a = p.dot(u);
-    const Eigen::Vector3d row(1.0, a, a * a);
-    normal += row * row.transpose();
-    right += row * p.dot(v);
-  }
-  const Eigen::Vector3d coefficients = normal.ldlt().solve(right);
-  double smooth = 0.0;
-  for (const auto& p : q)
-  {
-    const double a = p.dot(u);
-    const double e = p.dot(v) - coefficients.dot(Eigen::Vector3d(1.0, a, a * a));
-    smooth += e * e;
-  }
+  bool finite = false;
+  const double smooth = quadraticResidual(-1, 0.0, 0.0, finite);
   const double perPoint = hinge / std::max(1, static_cast<int>(q.size()) - 4);
   result.Kink = perPoint > 0.0
     ? (smooth - hinge) / perPoint
